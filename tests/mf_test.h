@@ -1,0 +1,70 @@
+/* mf_test.h - the tiny test harness of microfacet.h's tests, plus the shared
+ * numerical tools (Gauss-Legendre quadrature, chi-square, a fixed-seed RNG).
+ * Every check counts as one test; the runner prints "N passed, N failed". */
+#ifndef MF_TEST_H
+#define MF_TEST_H
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "microfacet.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+extern int mft_passed, mft_failed;
+extern int mft_verbose;
+
+/* Tolerance that depends on the build: double or float mf_real. */
+#ifdef MF_USE_DOUBLE
+#define MFT_TOL(dbl, flt) (dbl)
+#define MFT_REAL_NAME "double"
+#else
+#define MFT_TOL(dbl, flt) (flt)
+#define MFT_REAL_NAME "float"
+#endif
+
+int mft_check(int ok, const char *file, int line, const char *what);
+int mft_near(double got, double want, double rel, double abs_tol, const char *file, int line, const char *what);
+#define MFT_CHECK(cond, what) mft_check((cond) ? 1 : 0, __FILE__, __LINE__, what)
+#define MFT_NEAR(got, want, rel, abs_tol, what) mft_near((double)(got), (double)(want), rel, abs_tol, __FILE__, __LINE__, what)
+
+/* Deterministic RNG (PCG32), fixed seeds in every test. */
+typedef struct { unsigned long long s; } mft_rng;
+void mft_seed(mft_rng *r, unsigned long long seed);
+double mft_u01(mft_rng *r); /* [0, 1) with 53 bits */
+
+/* Gauss-Legendre: n-point nodes/weights on [0,1] (n <= 16). */
+void mft_gl(int n, double *x, double *w);
+
+/* Wilson-Hilferty z-score of a chi-square statistic with k degrees of freedom. */
+double mft_chi2_z(double chi2, int k);
+
+/* Chi-square of observed vs expected counts; bins with expected < 5 are pooled.
+ * Returns the z-score; *dof receives the degrees of freedom. */
+double mft_chi2(const double *obs, const double *expct, int n, int *dof);
+
+int mft_finite(double x);
+
+mf_vec3 mft_dir(double theta, double phi);
+
+/* Test modules. */
+void test_core(void);
+void test_ndf(void);
+void test_sampling(void);
+void test_brdf(void);
+void test_robust(void);
+void test_float(void);
+void test_tu2(void);
+
+/* Distributions under test, built from a parameter table. */
+typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;
+mf_ndf mft_make(const mft_case *c);
+extern const mft_case mft_cases[];
+extern const int mft_ncases;
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,48 @@
+/* The library in the other precision (this file is compiled with the opposite
+ * of the test binary's mf_real), behind a double interface, for test_float. */
+#include "microfacet.h"
+#include "ref_other.h"
+
+static mf_ndf make(int kind, double ax, double ay, double g)
+{
+    switch (kind) {
+    case MF_NDF_BECKMANN: return mf_beckmann((mf_real)ax, (mf_real)ay);
+    case MF_NDF_GGX: return mf_ggx((mf_real)ax, (mf_real)ay);
+    case MF_NDF_GTR: return mf_gtr((mf_real)ax, (mf_real)g);
+    default: return mf_student_t((mf_real)ax, (mf_real)ay, (mf_real)g);
+    }
+}
+static mf_vec3 v3(const double *v) { return mf_vec3_make((mf_real)v[0], (mf_real)v[1], (mf_real)v[2]); }
+
+double ref_D(int kind, double ax, double ay, double g, const double *wm)
+{
+    mf_ndf d = make(kind, ax, ay, g);
+    return (double)mf_D(&d, v3(wm));
+}
+double ref_lambda(int kind, double ax, double ay, double g, const double *w)
+{
+    mf_ndf d = make(kind, ax, ay, g);
+    return (double)mf_lambda(&d, v3(w));
+}
+double ref_brdf(int kind, double ax, double ay, double g, const double *wo, const double *wi)
+{
+    mf_ndf d = make(kind, ax, ay, g);
+    return (double)mf_brdf(&d, v3(wo), v3(wi));
+}
+double ref_brdf_pdf(int kind, double ax, double ay, double g, const double *wo, const double *wi)
+{
+    mf_ndf d = make(kind, ax, ay, g);
+    return (double)mf_brdf_pdf(&d, v3(wo), v3(wi));
+}
+void ref_sample_visible(int kind, double ax, double ay, double g, const double *w, double u1, double u2, double *wm)
+{
+    mf_ndf d = make(kind, ax, ay, g);
+    mf_vec3 m = mf_sample_visible(&d, v3(w), (mf_real)u1, (mf_real)u2);
+    wm[0] = (double)m.x; wm[1] = (double)m.y; wm[2] = (double)m.z;
+}
+void ref_sample_D(int kind, double ax, double ay, double g, double u1, double u2, double *wm)
+{
+    mf_ndf d = make(kind, ax, ay, g);
+    mf_vec3 m = mf_sample_D(&d, (mf_real)u1, (mf_real)u2);
+    wm[0] = (double)m.x; wm[1] = (double)m.y; wm[2] = (double)m.z;
+}

@@ -1,0 +1,2 @@
+#include "mf_test.h"
+void test_float(void) {}

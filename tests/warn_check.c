@@ -1,0 +1,46 @@
+/* Compiled by tests/warnings.sh with every warning as an error, in many
+ * language modes; linked as two translation units (MFT_SECOND_TU). Touches
+ * every public function so each one is instantiated. */
+#ifndef MFT_SECOND_TU
+#define MICROFACET_IMPLEMENTATION
+#endif
+#include "microfacet.h"
+#include "microfacet.h" /* including twice is harmless */
+
+#ifdef MFT_SECOND_TU
+mf_real mft_second(void);
+mf_real mft_second(void)
+{
+    mf_ndf d = mf_gtr(MF_R(0.3), MF_R(1.5));
+    return mf_D(&d, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0))) +
+           (mf_real)(mf_result_string(MF_ERROR_OUT_OF_MEMORY)[0] == 'o');
+}
+#else
+mf_real mft_second(void);
+int main(void)
+{
+    mf_ndf k[4];
+    mf_vec3 wo = mf_vec3_make(MF_R(0.36), MF_R(0.48), MF_R(0.8)), wi = mf_vec3_make(MF_R(-0.6), MF_R(0.0), MF_R(0.8));
+    mf_vec3 t, b;
+    mf_real s = MF_R(0.0);
+    int i;
+    k[0] = mf_beckmann(MF_R(0.2), MF_R(0.3));
+    k[1] = mf_ggx(MF_R(0.2), MF_R(0.3));
+    k[2] = mf_gtr(MF_R(0.2), MF_R(2.5));
+    k[3] = mf_student_t(MF_R(0.2), MF_R(0.3), MF_R(3.0));
+    for (i = 0; i < 4; ++i) {
+        const mf_ndf *d = &k[i];
+        mf_vec3 wm = mf_sample_visible(d, wo, MF_R(0.3), MF_R(0.7)), wd = mf_sample_D(d, MF_R(0.3), MF_R(0.7));
+        mf_vec3 ws = mf_brdf_sample(d, wo, MF_R(0.2), MF_R(0.9));
+        s += mf_D(d, wm) + mf_lambda(d, wo) + mf_G1(d, wo, wm) + mf_G2(d, wo, wi, wm) + mf_G2_separable(d, wo, wi, wm);
+        s += mf_D_visible(d, wo, wm) + wd.z + ws.z + mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi);
+        s += mf_brdf_sample_weight(d, wo, wi) + mf_projected_area(d, wo);
+    }
+    s += mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo) + mf_erfinv(MF_R(0.3));
+    s += mf_fresnel_dielectric(MF_R(0.5), MF_R(1.5)) + mf_fresnel_conductor(MF_R(0.5), MF_R(0.2), MF_R(3.0));
+    s += mf_fresnel_schlick(MF_R(0.04), MF_R(0.5));
+    mf_frame(wo, &t, &b);
+    s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
+    return s == s ? 0 : 1;
+}
+#endif

@@ -1,0 +1,25 @@
+#!/bin/sh
+# The header compiles without a warning (-Werror) as C99, C11 and C++98..20,
+# float and double, with gcc/g++ and (when present) clang/clang++, and in two
+# translation units linked together.
+CC=$1; CXX=$2; HAVE_CLANG=$3; WARN=$4; B=$5
+set -e
+run() { "$@" || { echo "warnings: failed: $*"; exit 1; }; }
+for prec in "" "-DMF_USE_DOUBLE"; do
+  for std in c99 c11; do
+    run $CC -std=$std $WARN -Werror $prec -I. -c tests/warn_check.c -o $B/wc.o
+    run $CC -std=$std $WARN -Werror $prec -DMFT_SECOND_TU -I. -c tests/warn_check.c -o $B/wc2.o
+    run $CC $B/wc.o $B/wc2.o -o $B/wc -lm
+    run $B/wc
+  done
+  for std in c++98 c++11 c++14 c++17 c++20; do
+    run $CXX -x c++ -std=$std $WARN -Werror $prec -I. -c tests/warn_check.c -o $B/wcx.o
+    run $CXX -x c++ -std=$std $WARN -Werror $prec -DMFT_SECOND_TU -I. -c tests/warn_check.c -o $B/wcx2.o
+    run $CXX $B/wcx.o $B/wcx2.o -o $B/wcx -lm
+    run $B/wcx
+  done
+  if [ "$HAVE_CLANG" = yes ]; then
+    run clang -std=c99 $WARN -Werror $prec -I. -c tests/warn_check.c -o $B/wcc.o
+    run clang++ -x c++ -std=c++17 $WARN -Werror $prec -I. -c tests/warn_check.c -o $B/wccx.o
+  fi
+done
