@@ -225,13 +225,14 @@ MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
 /* Unpolarized reflectance of a smooth interface. cos_theta_i is the cosine
  * between the incident direction and the normal on the incident side. */
 
-/* Dielectric; eta = n_transmitted / n_incident. A negative cos_theta_i means
- * the light arrives from the other side: eta is inverted. 1 on total internal
- * reflection. */
+/* Dielectric; eta = n_transmitted / n_incident, clamped to [1e-6, 1e6] (<= 0
+ * or NaN gives 0). A negative cos_theta_i means the light arrives from the
+ * other side: eta is inverted. 1 on total internal reflection. */
 MF_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 {
     mf_real ci, s2t, ct, rs, rp;
-    if (!(eta > MF_R(0.0))) return MF_R(0.0);
+    if (!(eta > MF_R(0.0)) || !(cos_theta_i == cos_theta_i)) return MF_R(0.0);
+    eta = mf_clamp(eta, MF_R(1e-6), MF_R(1e6));
     ci = mf_clamp(cos_theta_i, MF_R(-1.0), MF_R(1.0));
     if (ci < MF_R(0.0)) { eta = MF_R(1.0) / eta; ci = -ci; }
     s2t = (MF_R(1.0) - ci * ci) / (eta * eta);           /* Snell */
@@ -243,10 +244,14 @@ MF_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 }
 
 /* Conductor with complex index of refraction eta + i k (relative to the
- * outside medium); exact unpolarized form. */
+ * outside medium); exact unpolarized form. eta <= 0, k < 0 or NaN give 0;
+ * eta and k are capped at 1e6. */
 MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real k)
 {
     mf_real c = mf_clamp(MF_FABS(cos_theta_i), MF_R(0.0), MF_R(1.0));
+    if (!(eta > MF_R(0.0)) || !(k >= MF_R(0.0)) || !(c == c)) return MF_R(0.0);
+    eta = mf_min(eta, MF_R(1e6));
+    k = mf_min(k, MF_R(1e6));
     mf_real c2 = c * c, s2 = MF_R(1.0) - c2;
     mf_real e2 = eta * eta, k2 = k * k;
     mf_real t0 = e2 - k2 - s2;
@@ -263,6 +268,8 @@ MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real
 MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
 {
     mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0));
+    if (!(m == m)) m = MF_R(0.0);
+    f0 = mf_clamp(f0, MF_R(0.0), MF_R(1.0));
     mf_real m2 = m * m;
     return f0 + (MF_R(1.0) - f0) * m2 * m2 * m;
 }
@@ -392,7 +399,7 @@ typedef struct mf_ndf {
     int type;           /* mf_ndf_type */
     mf_real ax, ay;     /* slope-space roughness along x and y (GTR: ax = ay = alpha) */
     mf_real gamma;      /* tail exponent (GTR, Student-t); 0 otherwise */
-    mf_real c[12];      /* per-kind constants precomputed by the constructor */
+    mf_real c[13];      /* per-kind constants precomputed by the constructor */
 } mf_ndf;
 
 /* Layout of mf_ndf.c[] */
@@ -404,7 +411,9 @@ typedef struct mf_ndf {
 #define MF__GTR_W 5      /* 5 natural-spline weights for the masking nodes gamma = 0..4 */
 #define MF__ST_K 0       /* marginal slope density constant: P2(x) = K (1 + x^2/(g-1))^(1/2-g) */
 #define MF__ST_LBETA 1   /* log B(gamma - 1, 1/2) */
-#define MF__VNDF_P 11    /* tail exponent of the numerical VNDF sampler (GTR, Student-t) */
+#define MF__GTR_RK 10    /* kL / expm1(kL) */
+#define MF__GTR_RMK 11   /* -kL / expm1(-kL) */
+#define MF__VNDF_P 12    /* tail exponent of the numerical VNDF sampler (GTR, Student-t) */
 
 MF_INLINE mf_real mf__clamp_alpha(mf_real a)
 {
@@ -419,7 +428,7 @@ MF_INLINE mf_ndf mf__ndf_init(int type, mf_real ax, mf_real ay, mf_real gamma)
     d.ax = mf__clamp_alpha(ax);
     d.ay = mf__clamp_alpha(ay);
     d.gamma = gamma;
-    for (i = 0; i < 12; ++i) d.c[i] = MF_R(0.0);
+    for (i = 0; i < 13; ++i) d.c[i] = MF_R(0.0);
     return d;
 }
 
@@ -483,6 +492,8 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     d.c[MF__GTR_KL] = k * L;
     d.c[MF__GTR_E] = MF_EXPM1(k * L);
     d.c[MF__GTR_EM] = MF_EXPM1(-k * L);
+    d.c[MF__GTR_RK] = mf__x_over_expm1(k * L);
+    d.c[MF__GTR_RMK] = mf__x_over_expm1(-k * L);
     mf__spline5_weights(gamma, d.c + MF__GTR_W);
     d.c[MF__VNDF_P] = MF_R(4.0);
     return d;
@@ -545,13 +556,20 @@ MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
         return d->c[MF__GTR_NORM] / MF_POW(den, d->gamma);
     }
     case MF_NDF_STUDENT_T: {
-        mf_real z2, g1, r, lr;
+        /* in logs, so cos^2 may underflow: log D = -g log1p(s2/(g-1)) - 4 log cos,
+         * s2 = squared scaled slope; D ~ cos^(2g-4) grows at the horizon when g < 2,
+         * capped at e^60 / (pi ax ay) (reached only for cos < ~1e-25) */
+        mf_real g1, q, lz2, ls2, l1, lr;
         if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
-        z2 = wm.z * wm.z;
         g1 = d->gamma - MF_R(1.0);
-        r = g1 * z2 / (g1 * z2 + mf__q(d->ax, d->ay, wm));  /* (1 + tan^2/(a^2 (g-1)))^-1 */
-        lr = d->gamma * MF_LOG(r) - MF_R(2.0) * MF_LOG(z2);
-        lr = mf_min(lr, MF_R(60.0));  /* gamma < 2: D ~ cos^(2 gamma - 4) grows at the horizon */
+        q = mf__q(d->ax, d->ay, wm);
+        lz2 = MF_R(2.0) * MF_LOG(wm.z);
+        if (!(q > MF_R(0.0))) l1 = MF_R(0.0);
+        else {
+            ls2 = MF_LOG(q) - lz2;
+            l1 = ls2 > MF_R(30.0) ? ls2 - MF_LOG(g1) : MF_LOG1P(MF_EXP(ls2) / g1);
+        }
+        lr = mf_min(-d->gamma * l1 - MF_R(2.0) * lz2, MF_R(60.0));
         return MF_EXP(lr) / (MF_PI * d->ax * d->ay);
     }
     default: return MF_R(0.0);
@@ -653,7 +671,8 @@ MF_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
     case MF_NDF_BECKMANN: return mf_beckmann_lambda(d->ax, d->ay, w);
     case MF_NDF_GGX: return mf_ggx_lambda(d->ax, d->ay, w);
     case MF_NDF_GTR: {
-        mf_real lam[5], sig = MF_R(0.0), t2 = mf__a2t2(MF_R(1.0), MF_R(1.0), w);
+        /* tan^2 capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so float never overflows */
+        mf_real lam[5], sig = MF_R(0.0), t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16));
         int j;
         mf__gtr_lambda_nodes(d->ax * d->ax, d->c[MF__GTR_L], t2, lam);
         /* The thesis (C.3) splines S = 1/(1+Lambda) in gamma; at small alpha that
@@ -728,8 +747,9 @@ MF_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *             the other slope from erfinv. The CDF is scaled by tan(theta), so
  *             normal incidence (cot = infinity) and tiny alpha are exact.
  *   GTR, Student-t  exact numerical inversion (see mf__iso_sample_visible):
- *             about 100 evaluations of the inverse NDF CDF per sample
- *             (roughly 5-10x the cost of GGX), no rejection, deterministic. */
+ *             64 evaluations (32 in float builds) of the inverse NDF CDF per
+ *             sample, no rejection, deterministic; about 50-100x the cost of
+ *             GGX (see make bench). */
 
 /* wm from an unstretched slope direction (cos phi, sin phi) and squared unit
  * slope radius r2, stretched by (ax, ay): wm ~ (ax r cos, ay r sin, 1). */
@@ -750,10 +770,13 @@ MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
     if (!(t > MF_R(0.0))) return MF_R(0.0);
     if (d->type == MF_NDF_GTR) {
         /* w = sin^2 + a^2 cos^2 has density ~ w^-gamma on [a^2, 1]; log w = lw. */
-        mf_real L = d->c[MF__GTR_L], kL = d->c[MF__GTR_KL];
-        mf_real uq = q * mf__log1p_over_x(q * d->c[MF__GTR_E]) / mf__x_over_expm1(kL);    /* lw / L */
-        mf_real ut = t * mf__log1p_over_x(t * d->c[MF__GTR_EM]) / mf__x_over_expm1(-kL);  /* (L - lw) / L */
-        mf_real lw = L * uq, llw = L * ut;
+        mf_real L = d->c[MF__GTR_L], uq, ut, lw, llw;
+        /* uq = lw / L and ut = (L - lw) / L add up to 1; the smaller one is
+         * computed from its own end (q or t), the other as its complement */
+        uq = q * mf__log1p_over_x(q * d->c[MF__GTR_E]) / d->c[MF__GTR_RK];
+        if (uq < MF_R(0.5)) ut = MF_R(1.0) - uq;
+        else { ut = t * mf__log1p_over_x(t * d->c[MF__GTR_EM]) / d->c[MF__GTR_RMK]; uq = MF_R(1.0) - ut; }
+        lw = L * uq; llw = L * ut;
         mf_real c2 = uq / mf__x_over_expm1(lw);            /* cos^2 r(L)^-1 */
         mf_real s2 = MF_EXP(lw) * ut / mf__x_over_expm1(llw);
         if (!(c2 > MF_R(0.0))) return MF_BIG;
@@ -780,6 +803,25 @@ MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2)
     }
 }
 
+/* One step of safeguarded Newton for an increasing f on the bracket [lo, hi]:
+ * shrinks the bracket with the sign of f, takes the Newton step, falls back to
+ * bisection when the step leaves the bracket. Returns 1 when converged. */
+MF_INLINE int mf__newton_step(mf_real *x, mf_real f, mf_real df, mf_real *lo, mf_real *hi, mf_real tol)
+{
+    mf_real step, nx;
+    if (f > MF_R(0.0)) *hi = *x; else *lo = *x;
+    if (df > MF_R(0.0)) {
+        step = f / df;
+        nx = *x - step;
+        if (MF_FABS(step) <= tol) { *x = mf_clamp(nx, *lo, *hi); return 1; }
+        if (nx > *lo && nx < *hi) { *x = nx; return 0; }
+    }
+    nx = MF_R(0.5) * (*lo + *hi);
+    if (!(nx > *lo && nx < *hi)) return 1;   /* bracket exhausted */
+    *x = nx;
+    return 0;
+}
+
 /* Sample phi in (-pi, pi] with density proportional to max(0, c + cos(phi)). */
 MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
 {
@@ -792,14 +834,9 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
     total = c * phi0 + MF_SIN(phi0);
     if (c > MF_R(1e6)) return sgn * u * MF_PI;   /* uniform */
     lo = MF_R(0.0); hi = phi0; phi = u * phi0;
-    for (i = 0; i < 40; ++i) {
-        mf_real f = c * phi + MF_SIN(phi) - u * total, df = c + MF_COS(phi), nphi;
-        if (f > MF_R(0.0)) hi = phi; else lo = phi;
-        nphi = df > MF_R(0.0) ? phi - f / df : MF_R(0.5) * (lo + hi);
-        if (!(nphi > lo && nphi < hi)) nphi = MF_R(0.5) * (lo + hi);
-        if (MF_FABS(nphi - phi) < MF_R(4.0) * MF_EPS * (MF_R(1.0) + phi)) { phi = nphi; break; }
-        phi = nphi;
-    }
+    for (i = 0; i < 60; ++i)
+        if (mf__newton_step(&phi, c * phi + MF_SIN(phi) - u * total, c + MF_COS(phi), &lo, &hi, MF_R(4.0) * MF_EPS))
+            break;
     return sgn * phi;
 }
 
@@ -849,7 +886,7 @@ MF_INLINE mf_real mf__iso_vis_h(const mf__iso_vis *v, mf_real s, mf_real *t_out,
 {
     const mf_ndf *d = v->d;
     mf_real p = d->c[MF__VNDF_P], s2 = s * s, l = MF_LOG1P(-s2);
-    mf_real q = v->qc * MF_EXP(p * l), t = v->tc - v->qc * MF_EXPM1(p * l);
+    mf_real q = v->qc * MF_EXP(p * l), t = v->tc - v->qc * MF_EXPM1(p * l);   /* each accurate at its end */
     mf_real T2, psi = MF_R(1.0);
     *t_out = t; *q_out = q;
     if (!(q > MF_R(0.0)) || !(s2 < MF_R(1.0))) return MF_R(0.0);
@@ -867,15 +904,20 @@ MF_INLINE mf_real mf__iso_vis_h(const mf__iso_vis *v, mf_real s, mf_real *t_out,
  * (D-cos mass t, phi) factors into a marginal in t and phi given t:
  *   - inside theta_c = pi/2 - theta_v every azimuth faces the viewer and the
  *     marginal is the constant cos(theta_v): t is linear there (analytic);
- *   - beyond it the marginal cos(theta_v) psi is integrated on 8 panels of 8
- *     Gauss-Legendre nodes (64 evaluations, relative error of the total below
- *     1e-7 in double); inside the chosen panel the CDF of the Legendre
+ *   - beyond it the marginal cos(theta_v) psi is integrated on 8 panels (4 in
+ *     float builds) of 8 Gauss-Legendre nodes: 64 (32) evaluations, relative
+ *     error of the total measured below 2e-6 (6e-6) over GTR and Student-t
+ *     parameters, typically 1e-9 (1e-7); inside the chosen panel the CDF of the Legendre
  *     interpolant through the same nodes is inverted by safeguarded Newton, so
  *     no further evaluation is needed;
  *   - phi given theta has density max(0, cot(theta_v) cot(theta) + cos(phi)).
  * cv, sv: cos and sin of the view's polar angle, the view along +x. Returns wm
  * in that frame. */
-#define MF__ISO_PANELS 8
+#ifdef MF_USE_DOUBLE
+#define MF__ISO_PANELS 8   /* total mass to ~1e-8 relative */
+#else
+#define MF__ISO_PANELS 4   /* total mass to ~1e-5 relative, below float's sampling resolution */
+#endif
 MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv, mf_real u1, mf_real u2)
 {
     mf_real hv[MF__ISO_PANELS][MF__GL_N], cum[MF__ISO_PANELS + 1];
@@ -922,18 +964,12 @@ MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv
             x = MF_R(2.0) * mf_clamp(rem / mf_max((cum[k + 1] - cum[k]) / width, MF_R(1e-30)), MF_R(0.0), MF_R(1.0)) - MF_R(1.0);
             for (i = 0; i < 50; ++i) {
                 /* F(x) = integral over [-1, x] of the interpolant / 2; F' = h(x) / 2 */
-                mf_real F, dF = MF_R(0.0), nx;
+                mf_real F, dF = MF_R(0.0);
                 mf__legendre(x, P);
                 F = a[0] * (x + MF_R(1.0));
                 for (n = 1; n < MF__GL_N; ++n) F += a[n] * (P[n + 1] - P[n - 1]) / (mf_real)(2 * n + 1);
                 for (n = 0; n < MF__GL_N; ++n) dF += a[n] * P[n];
-                F = MF_R(0.5) * F - rem;
-                dF *= MF_R(0.5);
-                if (F > MF_R(0.0)) hi = x; else lo = x;
-                nx = dF > MF_R(0.0) ? x - F / dF : MF_R(0.5) * (lo + hi);
-                if (!(nx > lo && nx < hi)) nx = MF_R(0.5) * (lo + hi);
-                if (MF_FABS(nx - x) < MF_R(8.0) * MF_EPS) { x = nx; break; }
-                x = nx;
+                if (mf__newton_step(&x, MF_R(0.5) * F - rem, MF_R(0.5) * dF, &lo, &hi, MF_R(8.0) * MF_EPS)) break;
             }
             mf__iso_vis_h(&v, ((mf_real)k + MF_R(0.5) + MF_R(0.5) * x) * width, &t, &q);
         }
@@ -962,12 +998,8 @@ MF_INLINE void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, m
     for (i = 0; i < 60; ++i) {
         mf_real e = MF_EXP(-x * x);
         mf_real f = (MF_R(0.5) * MF_ERFC(-x) + tv * k * e) * inv - target;
-        mf_real df = e * (MF_R(1.0) - tv * x) * inv / MF_SQRT_PI, nx;
-        if (f > MF_R(0.0)) hi = x; else lo = x;
-        nx = df > MF_R(0.0) ? x - f / df : MF_R(0.5) * (lo + hi);
-        if (!(nx > lo && nx < hi)) nx = MF_R(0.5) * (lo + hi);
-        if (MF_FABS(nx - x) < MF_R(4.0) * MF_EPS * (MF_R(1.0) + MF_FABS(x))) { x = nx; break; }
-        x = nx;
+        mf_real df = e * (MF_R(1.0) - tv * x) * inv / MF_SQRT_PI;
+        if (mf__newton_step(&x, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + MF_FABS(x)))) break;
     }
     *sx = x;
     *sy = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
@@ -1062,7 +1094,9 @@ MF_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     wh = mf_normalize(mf_add(wo, wi));
     if (!(wh.z > MF_R(0.0))) return MF_R(0.0);
-    return mf_D(d, wh) * mf_G2(d, wo, wi, wh) / (MF_R(4.0) * wo.z * wi.z);
+    /* f grows like 1/cos at grazing retro-reflection: divide in two steps and
+     * cap, so float never overflows */
+    return mf_min(mf_D(d, wh) * mf_G2(d, wo, wi, wh) / (MF_R(4.0) * wo.z) / wi.z, MF_BIG);
 }
 
 /* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. */

@@ -82,12 +82,13 @@ double mft_chi2(const double *obs, const double *expct, int n, int *dof)
         chi2 += (obs[i] - expct[i]) * (obs[i] - expct[i]) / expct[i];
         ++k;
     }
-    if (pe > 0.0 || po > 0.0) {
-        if (pe < 1e-3) pe = 1e-3;
+    if (pe >= 5.0) {
         chi2 += (po - pe) * (po - pe) / pe;
         ++k;
     }
     *dof = k - 1 > 0 ? k - 1 : 1;
+    /* a pooled remainder too small for the statistic must still hold few samples */
+    if (pe < 5.0 && po > pe + 10.0) return 1e3;
     return mft_chi2_z(chi2, *dof);
 }
 

@@ -41,7 +41,8 @@ void mft_gl(int n, double *x, double *w);
 /* Wilson-Hilferty z-score of a chi-square statistic with k degrees of freedom. */
 double mft_chi2_z(double chi2, int k);
 
-/* Chi-square of observed vs expected counts; bins with expected < 5 are pooled.
+/* Chi-square of observed vs expected counts; bins with expected < 5 are pooled
+ * (and if the pool expects < 5, it may hold at most 10 more than expected).
  * Returns the z-score; *dof receives the degrees of freedom. */
 double mft_chi2(const double *obs, const double *expct, int n, int *dof);
 
