@@ -66,8 +66,8 @@ asan: | $(BUILD)
 	@sh tests/run_all.sh "" $(BUILD)/asan_double $(BUILD)/asan_float
 
 bench: | $(BUILD)
-	$(CC) -std=c99 -O2 $(WARN) -I. bench/bench.c -o $(BUILD)/bench -lm
-	$(CC) -std=c99 -O2 $(WARN) -DMF_USE_DOUBLE -I. bench/bench.c -o $(BUILD)/bench_double -lm
+	$(CC) -std=c99 -O2 $(WARN) -DMF_BENCH_FLAGS="\"-std=c99 -O2\"" -I. bench/bench.c -o $(BUILD)/bench -lm
+	$(CC) -std=c99 -O2 $(WARN) -DMF_USE_DOUBLE -DMF_BENCH_FLAGS="\"-std=c99 -O2 -DMF_USE_DOUBLE\"" -I. bench/bench.c -o $(BUILD)/bench_double -lm
 	./$(BUILD)/bench
 	./$(BUILD)/bench_double
 

@@ -146,6 +146,20 @@ typedef float mf_real;
 #ifndef MF_INLINE
 #define MF_INLINE static inline MF_HD
 #endif
+/* MF_SLOW marks the heavy branches of the generic dispatch (numerical
+ * samplers, special functions) as not to be inlined, so that mf_D, mf_G2,
+ * mf_sample_visible... stay small and the common kinds (GGX) inline fully. */
+#ifndef MF_SLOW
+#if defined(__CUDACC__)
+#define MF_SLOW static __noinline__ MF_HD
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF_SLOW static __attribute__((noinline, unused))
+#elif defined(_MSC_VER)
+#define MF_SLOW static __declspec(noinline)
+#else
+#define MF_SLOW static inline
+#endif
+#endif
 #ifndef MFDEF
 #define MFDEF extern
 #endif
@@ -542,6 +556,25 @@ MF_INLINE mf_real mf_ggx_D(mf_real ax, mf_real ay, mf_vec3 wm)
     return MF_R(1.0) / (MF_PI * ax * ay * t * t);
 }
 
+/* Student-t D in logs, so cos^2 may underflow: log D = -g log1p(s2/(g-1)) - 4 log cos,
+ * s2 the squared scaled slope. D ~ cos^(2g-4) grows at the horizon when g < 2;
+ * capped at e^60 / (pi ax ay) (reached only for cos < ~1e-25). */
+MF_SLOW mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm)
+{
+    mf_real g1, q, lz2, ls2, l1, lr;
+    if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
+    g1 = d->gamma - MF_R(1.0);
+    q = mf__q(d->ax, d->ay, wm);
+    lz2 = MF_R(2.0) * MF_LOG(wm.z);
+    if (!(q > MF_R(0.0))) l1 = MF_R(0.0);
+    else {
+        ls2 = MF_LOG(q) - lz2;
+        l1 = ls2 > MF_R(30.0) ? ls2 - MF_LOG(g1) : MF_LOG1P(MF_EXP(ls2) / g1);
+    }
+    lr = mf_min(-d->gamma * l1 - MF_R(2.0) * lz2, MF_R(60.0));
+    return MF_EXP(lr) / (MF_PI * d->ax * d->ay);
+}
+
 /* D(wm), 1/sr; 0 if wm.z <= 0. */
 MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
 {
@@ -555,23 +588,7 @@ MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
         den = s2 + d->ax * d->ax * wm.z * wm.z;  /* 1 + (a^2 - 1) cos^2 for unit wm */
         return d->c[MF__GTR_NORM] / MF_POW(den, d->gamma);
     }
-    case MF_NDF_STUDENT_T: {
-        /* in logs, so cos^2 may underflow: log D = -g log1p(s2/(g-1)) - 4 log cos,
-         * s2 = squared scaled slope; D ~ cos^(2g-4) grows at the horizon when g < 2,
-         * capped at e^60 / (pi ax ay) (reached only for cos < ~1e-25) */
-        mf_real g1, q, lz2, ls2, l1, lr;
-        if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
-        g1 = d->gamma - MF_R(1.0);
-        q = mf__q(d->ax, d->ay, wm);
-        lz2 = MF_R(2.0) * MF_LOG(wm.z);
-        if (!(q > MF_R(0.0))) l1 = MF_R(0.0);
-        else {
-            ls2 = MF_LOG(q) - lz2;
-            l1 = ls2 > MF_R(30.0) ? ls2 - MF_LOG(g1) : MF_LOG1P(MF_EXP(ls2) / g1);
-        }
-        lr = mf_min(-d->gamma * l1 - MF_R(2.0) * lz2, MF_R(60.0));
-        return MF_EXP(lr) / (MF_PI * d->ax * d->ay);
-    }
+    case MF_NDF_STUDENT_T: return mf__student_t_D(d, wm);
     default: return MF_R(0.0);
     }
 }
@@ -664,34 +681,48 @@ MF_INLINE mf_real mf__student_t_lambda_mu(const mf_ndf *d, mf_real mu)
     return mf_max(head - tail, MF_R(0.0));
 }
 
-/* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. */
-MF_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
+/* GTR Lambda: Dimov's formulas at the integer tails, spline in gamma.
+ * The thesis (C.3) splines S = 1/(1+Lambda) in gamma; at small alpha that
+ * misses the masking constraint by up to 17% (alpha 0.02, gamma 0.5), because
+ * Lambda scales like alpha^(2 gamma - 2). The spline of log(Lambda) follows
+ * that scaling: measured error of the constraint <= 0.6% for gamma >= 1 and
+ * <= 5.4% for gamma < 1 (alpha in [0.02, 1], theta_v <= 89 deg). Exact at
+ * integer gamma. tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so float
+ * never overflows. */
+MF_SLOW mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
+{
+    mf_real lam[5], sig = MF_R(0.0), t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16));
+    int j;
+    if (!(t2 > MF_R(0.0))) return MF_R(0.0);
+    mf__gtr_lambda_nodes(d->ax * d->ax, d->c[MF__GTR_L], t2, lam);
+    for (j = 0; j < 5; ++j) sig += d->c[MF__GTR_W + j] * MF_LOG(mf_max(lam[j], MF_TINY));
+    return MF_EXP(sig);
+}
+
+/* Student-t Lambda through the projected roughness. */
+MF_SLOW mf_real mf__student_t_lambda(const mf_ndf *d, mf_vec3 w)
+{
+    mf_real a2t2 = mf__a2t2(d->ax, d->ay, w);
+    if (!(a2t2 > MF_R(0.0))) return MF_R(0.0);
+    return mf__student_t_lambda_mu(d, MF_R(1.0) / MF_SQRT(a2t2));
+}
+
+MF_SLOW mf_real mf__lambda_other(const mf_ndf *d, mf_vec3 w)
 {
     switch (d->type) {
     case MF_NDF_BECKMANN: return mf_beckmann_lambda(d->ax, d->ay, w);
-    case MF_NDF_GGX: return mf_ggx_lambda(d->ax, d->ay, w);
-    case MF_NDF_GTR: {
-        /* tan^2 capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so float never overflows */
-        mf_real lam[5], sig = MF_R(0.0), t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16));
-        int j;
-        mf__gtr_lambda_nodes(d->ax * d->ax, d->c[MF__GTR_L], t2, lam);
-        /* The thesis (C.3) splines S = 1/(1+Lambda) in gamma; at small alpha that
-         * misses the masking constraint by up to 17% (alpha 0.02, gamma 0.5), because
-         * Lambda scales like alpha^(2 gamma - 2). The spline of log(Lambda) follows
-         * that scaling: measured error of the constraint <= 0.6% for gamma >= 1 and
-         * <= 3% for gamma < 1 (alpha in [0.02, 1], theta_v <= 86 deg). Exact at
-         * integer gamma. */
-        if (!(t2 > MF_R(0.0))) return MF_R(0.0);
-        for (j = 0; j < 5; ++j) sig += d->c[MF__GTR_W + j] * MF_LOG(mf_max(lam[j], MF_TINY));
-        return MF_EXP(sig);
-    }
-    case MF_NDF_STUDENT_T: {
-        mf_real a2t2 = mf__a2t2(d->ax, d->ay, w);
-        if (!(a2t2 > MF_R(0.0))) return MF_R(0.0);
-        return mf__student_t_lambda_mu(d, MF_R(1.0) / MF_SQRT(a2t2));
-    }
+    case MF_NDF_GTR: return mf__gtr_lambda(d, w);
+    case MF_NDF_STUDENT_T: return mf__student_t_lambda(d, w);
     default: return MF_R(0.0);
     }
+}
+
+/* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. GGX inline,
+ * the other kinds out of line. */
+MF_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
+{
+    if (d->type == MF_NDF_GGX) return mf_ggx_lambda(d->ax, d->ay, w);
+    return mf__lambda_other(d, w);
 }
 
 /* Monodirectional masking G1(w, wm) = chi+(w.wm) chi+(w.z) / (1 + Lambda(w)). */
@@ -764,7 +795,7 @@ MF_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf_real 
  * roughness, stretched by the caller). t is the CDF of D cos measured from the
  * pole (theta = 0), q = 1 - t the mass beyond theta; both are passed so each
  * end stays accurate. Returns tan^2(theta) (MF_BIG at q = 0). */
-MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
+MF_SLOW mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
 {
     if (!(q > MF_R(0.0))) return MF_BIG;
     if (!(t > MF_R(0.0))) return MF_R(0.0);
@@ -986,7 +1017,7 @@ MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv
 /* Beckmann visible slopes for unit roughness and view tan(theta) = tv (view
  * along +x): the slope x along the view has density ~ max(0, 1 - tv x) exp(-x^2),
  * CDF F(x) = [erfc(-x)/2 + tv exp(-x^2)/(2 sqrt(pi))] / (1 + tv); y ~ N(0, 1/2). */
-MF_INLINE void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_real *sx, mf_real *sy)
+MF_SLOW void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_real *sx, mf_real *sy)
 {
     mf_real mu = tv > MF_R(1.0) / MF_R(12.0) ? MF_R(1.0) / tv : MF_R(12.0);
     mf_real inv = MF_R(1.0) / (MF_R(1.0) + tv), k = MF_R(0.5) / MF_SQRT_PI;
@@ -1061,11 +1092,9 @@ MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__wm_from_slope(d->ax, d->ay, r2, cp, sp);
 }
 
-/* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. */
-MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+MF_SLOW mf_vec3 mf__sample_visible_other(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     switch (d->type) {
-    case MF_NDF_GGX: return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
     case MF_NDF_BECKMANN: return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
     case MF_NDF_GTR:
     case MF_NDF_STUDENT_T: {
@@ -1079,6 +1108,14 @@ MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_r
     }
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
+}
+
+/* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
+ * inline, the other kinds out of line. */
+MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+    return mf__sample_visible_other(d, w, u1, u2);
 }
 
 /* ======================================================================== */
