@@ -1,0 +1,23 @@
+// Compiled by `make cuda-check` with nvcc -c (no GPU needed): every generic
+// operation must be callable from device code.
+#include "microfacet.h"
+
+__global__ void mf_kernel(const float *u, float *out, int n)
+{
+    int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    mf_ndf k[4];
+    k[0] = mf_beckmann(MF_R(0.2), MF_R(0.3));
+    k[1] = mf_ggx(MF_R(0.2), MF_R(0.3));
+    k[2] = mf_gtr(MF_R(0.2), MF_R(1.5));
+    k[3] = mf_student_t(MF_R(0.2), MF_R(0.3), MF_R(3.0));
+    const mf_ndf *d = &k[i & 3];
+    mf_vec3 wo = mf_normalize(mf_vec3_make((mf_real)u[i], MF_R(0.2), MF_R(0.8)));
+    mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);
+    mf_vec3 wm = mf_sample_D(d, (mf_real)u[i], MF_R(0.5));
+    mf_real r = mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi) + mf_brdf_sample_weight(d, wo, wi);
+    r += mf_D(d, wm) + mf_G1(d, wo, wm) + mf_G2_separable(d, wo, wi, wm) + mf_D_visible(d, wo, wm);
+    r += mf_fresnel_conductor(wo.z, MF_R(0.2), MF_R(3.9)) + mf_fresnel_dielectric(wo.z, MF_R(1.5));
+    r += mf_fresnel_schlick(MF_R(0.04), wo.z) + mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo);
+    out[i] = (float)r;
+}
