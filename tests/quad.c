@@ -3,6 +3,7 @@
  * tails (power map for infinite ends, exponential map for finite ones). */
 #include "mf_test.h"
 #include "quad.h"
+#include <stdlib.h>
 
 #define MFT_R 10.0
 
@@ -124,4 +125,62 @@ double mft_visible_integral(const mf_ndf *d, mf_vec3 v, int what)
     c.d = d; c.v = v; c.vz = v.z; c.s = s; c.what = what;
     if (s > 0.0) { c.cp = nx / s; c.sp = ny / s; } else { c.cp = 1.0; c.sp = 0.0; }
     return mft_integrate2(f_vis, &c, -HUGE_VAL, s > 0.0 ? c.vz / s : HUGE_VAL, -HUGE_VAL, HUGE_VAL, 1.0, 1.0, 48);
+}
+
+/* ---- cells over the hemisphere for chi-square tests ---- */
+
+int mft_cell_of(const mft_cells *c, mf_vec3 m)
+{
+    const double pi = 3.14159265358979323846;
+    double X, Y, a, p;
+    int ia, ip;
+    if (!(m.z > 0)) return -1;
+    X = -m.x / (m.z * c->bx); Y = -m.y / (m.z * c->by);
+    a = atan(sqrt(X * X + Y * Y)) * 2.0 / pi;
+    p = atan2(Y, X); if (p < 0) p += 2.0 * pi;
+    ia = (int)(a * c->na); ip = (int)(p / (2.0 * pi) * c->np);
+    if (ia >= c->na) ia = c->na - 1;
+    if (ip >= c->np) ip = c->np - 1;
+    return ia * c->np + ip;
+}
+
+void mft_cell_probs(const mft_cells *c, double (*dens)(mf_vec3, void *), void *ctx, int sub, double *prob)
+{
+    const double pi = 3.14159265358979323846;
+    double gx[6], gw[6];
+    int ia, ip, i, j, na = c->na, np = c->np;
+    mft_gl(6, gx, gw);
+    for (ia = 0; ia < na; ++ia)
+        for (ip = 0; ip < np; ++ip) {
+            double s = 0.0;
+            for (i = 0; i < 6 * sub; ++i)
+                for (j = 0; j < 6 * sub; ++j) {
+                    /* the outer ring reaches the horizon, where D may diverge
+                     * (Student-t, gamma < 2): a = 1 - (1 - s)^4 / na there */
+                    double sa = (i / 6 + gx[i % 6]) / sub, da = 1.0 / na;
+                    double a = ia < na - 1 ? (ia + sa) / na : 1.0 - pow(1.0 - sa, 4.0) / na;
+                    double psi = (ip + (j / 6 + gx[j % 6]) / sub) / np * 2.0 * pi;
+                    double R = tan(0.5 * pi * a), dR = 0.5 * pi / (cos(0.5 * pi * a) * cos(0.5 * pi * a));
+                    double x = c->bx * R * cos(psi), y = c->by * R * sin(psi);
+                    double cz = 1.0 / sqrt(1.0 + x * x + y * y);
+                    mf_vec3 m = mf_vec3_make((mf_real)(-x * cz), (mf_real)(-y * cz), (mf_real)cz);
+                    if (ia == na - 1) da = 4.0 * pow(1.0 - sa, 3.0) / na;
+                    /* dm = cos^3 dslope, dslope = bx by R dR dpsi */
+                    s += gw[i % 6] * gw[j % 6] / (sub * sub) * dens(m, ctx) *
+                         cz * cz * cz * c->bx * c->by * R * dR * (2.0 * pi / np) * da;
+                }
+            prob[ia * np + ip] = s;
+        }
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+double mft_median(double *v, int n)
+{
+    qsort(v, (size_t)n, sizeof(double), cmp_double);
+    return v[n / 2];
 }

@@ -14,7 +14,6 @@
 #define NA 20
 #define NP 20
 
-static const double PI = 3.14159265358979323846;
 
 typedef struct { const mf_ndf *d; mf_vec3 wo; } alb_ctx;
 
@@ -32,10 +31,14 @@ static double f_albedo(double X, double Y, void *p)
     return (double)mf_brdf(c->d, c->wo, wi) * wi.z * 4.0 * oh * cz * cz * cz * c->d->ax * c->d->ay;
 }
 
-static int cmp_double(const void *a, const void *b)
+/* density of the half vector of mf_brdf_sample: pdf(wi(h)) |dwi/dh| */
+typedef struct { const mf_ndf *d; mf_vec3 wo; } h_ctx;
+static double h_density(mf_vec3 h, void *p)
 {
-    double x = *(const double *)a, y = *(const double *)b;
-    return x < y ? -1 : x > y;
+    const h_ctx *c = (const h_ctx *)p;
+    double oh = mf_dot(c->wo, h);
+    if (oh <= 0) return 0.0;
+    return (double)mf_brdf_pdf(c->d, c->wo, mf_reflect(c->wo, h)) * 4.0 * oh;
 }
 
 static void brdf_case(const mft_case *cs, mf_vec3 wo, int n, unsigned long long seed, int spline)
@@ -43,8 +46,10 @@ static void brdf_case(const mft_case *cs, mf_vec3 wo, int n, unsigned long long 
     static double obs[NA * NP + 1], e[NA * NP + 1], rr[2001];
     mf_ndf d = mft_make(cs);
     mft_rng r;
-    int i, j, ia, ip, dof, badw = 0, badr = 0;
-    double bx, by, gx[6], gw[6], tot = 0.0, sumw = 0.0, sumw2 = 0.0, z, alb, mc, se, norm = 1.0;
+    mft_cells cells;
+    h_ctx hc;
+    int i, dof, badw = 0, badr = 0;
+    double tot = 0.0, sumw = 0.0, sumw2 = 0.0, z, alb, mc, se, norm = 1.0, med;
     char msg[200];
     alb_ctx ac;
     /* cell scale from pilot samples */
@@ -55,13 +60,13 @@ static void brdf_case(const mft_case *cs, mf_vec3 wo, int n, unsigned long long 
         double X = h.x / (d.ax * h.z), Y = h.y / (d.ay * h.z);
         rr[i] = wi.z > 0 ? sqrt(X * X + Y * Y) : 1e30;
     }
-    qsort(rr, 2001, sizeof(double), cmp_double);
-    bx = d.ax * rr[1000]; by = d.ay * rr[1000];
+    med = mft_median(rr, 2001);
+    cells.na = NA; cells.np = NP; cells.bx = d.ax * med; cells.by = d.ay * med;
     memset(obs, 0, sizeof obs);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
-        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)), h;
-        double X, Y, a, p, w;
+        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        double w;
         if (!(wi.z > 0)) { obs[NA * NP] += 1; continue; }
         /* weight identity and reciprocity on the sampled pair */
         w = mf_brdf_sample_weight(&d, wo, wi);
@@ -71,41 +76,13 @@ static void brdf_case(const mft_case *cs, mf_vec3 wo, int n, unsigned long long 
             if (fabs(f - fr) > MFT_TOL(1e-12, 1e-5) * f) ++badr;
         }
         sumw += w; sumw2 += w * w;
-        h = mf_normalize(mf_add(wo, wi));
-        X = -h.x / (bx * h.z); Y = -h.y / (by * h.z);
-        a = atan(sqrt(X * X + Y * Y)) * 2.0 / PI;
-        p = atan2(Y, X); if (p < 0) p += 2.0 * PI;
-        ia = (int)(a * NA); ip = (int)(p / (2.0 * PI) * NP);
-        if (ia >= NA) ia = NA - 1;
-        if (ip >= NP) ip = NP - 1;
-        obs[ia * NP + ip] += 1;
+        obs[mft_cell_of(&cells, mf_normalize(mf_add(wo, wi)))] += 1;
     }
-    /* expected: pdf(wi) |dwi/dh| over each half-vector cell */
-    mft_gl(6, gx, gw);
-    for (ia = 0; ia < NA; ++ia)
-        for (ip = 0; ip < NP; ++ip) {
-            double s = 0.0;
-            /* 3 x 3 sub-cells of 6 x 6 nodes: cells cut by the horizon of wi
-             * (where the pdf drops to 0) need the resolution */
-            for (i = 0; i < 18; ++i)
-                for (j = 0; j < 18; ++j) {
-                    double sa = (i / 6 + gx[i % 6]) / 3.0, da = 1.0 / NA;
-                    double a = ia < NA - 1 ? (ia + sa) / NA : 1.0 - pow(1.0 - sa, 4.0) / NA;
-                    double psi = (ip + (j / 6 + gx[j % 6]) / 3.0) / NP * 2.0 * PI, R, dR, x, y, cz, oh;
-                    mf_vec3 h, wi;
-                    if (ia == NA - 1) da = 4.0 * pow(1.0 - sa, 3.0) / NA;
-                    R = tan(0.5 * PI * a); dR = 0.5 * PI / (cos(0.5 * PI * a) * cos(0.5 * PI * a));
-                    x = bx * R * cos(psi); y = by * R * sin(psi); cz = 1.0 / sqrt(1.0 + x * x + y * y);
-                    h = mf_vec3_make((mf_real)(-x * cz), (mf_real)(-y * cz), (mf_real)cz);
-                    oh = mf_dot(wo, h);
-                    if (oh <= 0) continue;
-                    wi = mf_reflect(wo, h);
-                    s += gw[i % 6] * gw[j % 6] / 9.0 * (double)mf_brdf_pdf(&d, wo, wi) * 4.0 * oh * cz * cz * cz * bx * by * R * dR *
-                         (2.0 * PI / NP) * da;
-                }
-            e[ia * NP + ip] = s;
-            tot += s;
-        }
+    /* expected: 3 x 3 sub-cells, since cells cut by the horizon of wi (where
+     * the pdf drops to 0) need the resolution */
+    hc.d = &d; hc.wo = wo;
+    mft_cell_probs(&cells, h_density, &hc, 3, e);
+    for (i = 0; i < NA * NP; ++i) tot += e[i];
     if (spline) norm = mft_visible_integral(&d, wo, 1);   /* integral of D_v with the spline Lambda */
     for (i = 0; i < NA * NP; ++i) e[i] *= n / norm;
     e[NA * NP] = n * (1.0 - tot / norm);
