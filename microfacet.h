@@ -21,11 +21,13 @@
  *   == 2. Vectors and frames
  *   == 3. Fresnel
  *   == 4. Special functions (erf inverse, incomplete beta, stable helpers)
- *   == 5. Distributions: Beckmann, GGX, GTR, Student-t; generic mf_ndf and mf_D
- *   == 6. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
- *   == 7. Sampling: NDF (D cos) and visible normals (VNDF) for every distribution
- *   == 8. Specular microfacet BRDF: eval, sample, pdf
- *   == 9. Declarations of non-inline functions; implementation section
+ *   == 5. Distributions: Beckmann, GGX, GTR, Student-t; the value type mf_ndf
+ *   == 6. Linearly transformed microsurfaces: any 2x2 transform of any
+ *         distribution, stretch anisotropy, deformation tracking; mf_D
+ *   == 7. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
+ *   == 8. Sampling: NDF (D cos) and visible normals (VNDF) for every distribution
+ *   == 9. Specular microfacet BRDF: eval, sample, pdf
+ *   == 10. Declarations of non-inline functions; implementation section
  *
  * CONVENTIONS
  *
@@ -72,7 +74,8 @@
  * REVISIONS
  *
  *   0.1.0  first release: Beckmann, GGX, GTR, Student-t; Smith Lambda, G1, G2;
- *          NDF and VNDF sampling; specular BRDF; Fresnel.
+ *          NDF and VNDF sampling; specular BRDF; Fresnel; linearly transformed
+ *          microsurfaces for every distribution.
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
@@ -220,6 +223,38 @@ MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)
 MF_INLINE mf_vec3 mf_reflect(mf_vec3 w, mf_vec3 m)
 {
     return mf_add(mf_scale(m, MF_R(2.0) * mf_dot(w, m)), mf_scale(w, MF_R(-1.0)));
+}
+
+/* 2x2 matrices, row-major: M = [m00 m01; m10 m11] acts on column vectors. */
+MF_INLINE mf_mat2 mf_mat2_make(mf_real m00, mf_real m01, mf_real m10, mf_real m11)
+{
+    mf_mat2 m;
+    m.m00 = m00; m.m01 = m01; m.m10 = m10; m.m11 = m11;
+    return m;
+}
+MF_INLINE mf_mat2 mf_mat2_mul(mf_mat2 a, mf_mat2 b)
+{
+    return mf_mat2_make(a.m00 * b.m00 + a.m01 * b.m10, a.m00 * b.m01 + a.m01 * b.m11,
+                        a.m10 * b.m00 + a.m11 * b.m10, a.m10 * b.m01 + a.m11 * b.m11);
+}
+MF_INLINE mf_real mf_mat2_det(mf_mat2 a) { return a.m00 * a.m11 - a.m01 * a.m10; }
+MF_INLINE mf_mat2 mf_mat2_transpose(mf_mat2 a) { return mf_mat2_make(a.m00, a.m10, a.m01, a.m11); }
+/* The inverse; the zero matrix when a is singular or not finite. */
+MF_INLINE mf_mat2 mf_mat2_inverse(mf_mat2 a)
+{
+    mf_real det = mf_mat2_det(a), inv;
+    if (!(det != MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return mf_mat2_make(0, 0, 0, 0);
+    inv = MF_R(1.0) / det;
+    return mf_mat2_make(a.m11 * inv, -a.m01 * inv, -a.m10 * inv, a.m00 * inv);
+}
+/* (M v.xy, v.z) and (M^T v.xy, v.z) */
+MF_INLINE mf_vec3 mf_mat2_apply(mf_mat2 a, mf_vec3 v)
+{
+    return mf_vec3_make(a.m00 * v.x + a.m01 * v.y, a.m10 * v.x + a.m11 * v.y, v.z);
+}
+MF_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
+{
+    return mf_vec3_make(a.m00 * v.x + a.m10 * v.y, a.m01 * v.x + a.m11 * v.y, v.z);
 }
 
 /* Tangent frame (t, b) around a unit normal n, branchless and singularity-free
@@ -411,9 +446,12 @@ typedef enum mf_ndf_type {
 
 typedef struct mf_ndf {
     int type;           /* mf_ndf_type */
+    int transformed;    /* 1 when M (below) is not the identity */
     mf_real ax, ay;     /* slope-space roughness along x and y (GTR: ax = ay = alpha) */
     mf_real gamma;      /* tail exponent (GTR, Student-t); 0 otherwise */
     mf_real c[13];      /* per-kind constants precomputed by the constructor */
+    mf_mat2 M, Minv;    /* tangential transform of the microsurface and its inverse */
+    mf_real det;        /* |det M| */
 } mf_ndf;
 
 /* Layout of mf_ndf.c[] */
@@ -443,6 +481,9 @@ MF_INLINE mf_ndf mf__ndf_init(int type, mf_real ax, mf_real ay, mf_real gamma)
     d.ay = mf__clamp_alpha(ay);
     d.gamma = gamma;
     for (i = 0; i < 13; ++i) d.c[i] = MF_R(0.0);
+    d.transformed = 0;
+    d.M = d.Minv = mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    d.det = MF_R(1.0);
     return d;
 }
 
@@ -575,8 +616,8 @@ MF_SLOW mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm)
     return MF_EXP(lr) / (MF_PI * d->ax * d->ay);
 }
 
-/* D(wm), 1/sr; 0 if wm.z <= 0. */
-MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
+/* D(wm) of the untransformed distribution. */
+MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
     case MF_NDF_BECKMANN: return mf_beckmann_D(d->ax, d->ay, wm);
@@ -594,7 +635,162 @@ MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
 }
 
 /* ======================================================================== */
-/* == 6. Smith masking                                                      */
+/* == 6. Linearly transformed microsurfaces                                 */
+/* ======================================================================== */
+/* Atanasov et al. 2022 (thesis ch. 4): the microsurface is transformed by a
+ * tangential matrix M (Eq. 4.1: M acts on the xy plane, z is kept). Normals
+ * transform by M^-T, so the statistics of the new surface are those of the old
+ * one at transformed arguments:
+ *   D_M(m)     = |det M| / |M^T m|^4 D(M^T m / |M^T m|)        (Eq. 4.14)
+ *   G1_M(v, m) = G1(M^-1 v / |M^-1 v|, M^T m / |M^T m|)         (Eq. 4.4)
+ *   sampling   u' ~ D cos or D_w with w = M^-1 v / |.|, then m' = M^-T u' / |.|
+ *                                                              (Eq. 4.17-4.21)
+ * This holds for every distribution, shape-invariant or not; mf_transformed
+ * works on any mf_ndf and every generic operation honours it. A diagonal M on a
+ * shape-invariant distribution equals elliptical anisotropy (Eq. 4.22-4.23). */
+
+/* M with |det M| <= MF_TRANSFORM_MIN_DET times the squared Frobenius norm of
+ * M (or with a non-finite entry) is not invertible enough to define a surface. */
+#define MF_TRANSFORM_MIN_DET MF_R(1e-9)
+
+/* 1 if M can transform a microsurface (finite, |det| above the threshold). */
+MF_INLINE int mf_transform_valid(mf_mat2 M)
+{
+    mf_real n2 = M.m00 * M.m00 + M.m01 * M.m01 + M.m10 * M.m10 + M.m11 * M.m11;
+    mf_real det = MF_FABS(mf_mat2_det(M));
+    return n2 < MF_BIG && det < MF_BIG && det > MF_TRANSFORM_MIN_DET * n2;
+}
+
+/* The distribution of the microsurface transformed by M (row-major, acting
+ * on the tangent-plane coordinates (x, y) of the shading frame). Transforming
+ * a transformed distribution composes: mf_transformed(mf_transformed(b, M1), M2)
+ * is b transformed by M2 M1. An M that fails mf_transform_valid is rejected:
+ * base is returned unchanged. The identity gives back base itself, at no cost. */
+MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
+{
+    mf_ndf d = base;
+    mf_mat2 P = base.transformed ? mf_mat2_mul(M, base.M) : M;
+    if (!mf_transform_valid(M) || !mf_transform_valid(P)) return base;
+    if (P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0)) {
+        d.transformed = 0;
+        d.M = d.Minv = P;
+        d.det = MF_R(1.0);
+        return d;
+    }
+    d.transformed = 1;
+    d.M = P;
+    d.Minv = mf_mat2_inverse(P);
+    d.det = MF_FABS(mf_mat2_det(P));
+    return d;
+}
+
+/* Stretch matrix M_s (Eq. 4.24): diag(1/(1-s), 1-s) for s in [0,1),
+ * diag(1+s, 1/(1+s)) for s in (-1,0); det M_s = 1, M_s^-1 = M_-s (Eq. 4.25).
+ * s is clamped to [-0.999, 0.999]. */
+MF_INLINE mf_mat2 mf_stretch_matrix(mf_real s)
+{
+    s = s == s ? mf_clamp(s, MF_R(-0.999), MF_R(0.999)) : MF_R(0.0);
+    if (s >= MF_R(0.0)) return mf_mat2_make(MF_R(1.0) / (MF_R(1.0) - s), MF_R(0.0), MF_R(0.0), MF_R(1.0) - s);
+    return mf_mat2_make(MF_R(1.0) + s, MF_R(0.0), MF_R(0.0), MF_R(1.0) / (MF_R(1.0) + s));
+}
+
+/* Stretch anisotropy: s > 0 stretches along x (smoother in x), s < 0 along y. */
+MF_INLINE mf_ndf mf_stretched(mf_ndf base, mf_real s)
+{
+    return mf_transformed(base, mf_stretch_matrix(s));
+}
+
+/* Anisotropic GTR by scaling the microsurface (Eq. 4.22 with alpha =
+ * sqrt(alpha_x alpha_y)): exactly elliptical anisotropy for shape-invariant
+ * kinds; for GTR (shape-variant) the closest analogue, which keeps the area
+ * of the highlight of the isotropic GTR of roughness sqrt(alpha_x alpha_y). */
+MF_INLINE mf_ndf mf_gtr_anisotropic(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
+{
+    mf_real ax = mf_min(mf__clamp_alpha(alpha_x), MF_R(1.0)), ay = mf_min(mf__clamp_alpha(alpha_y), MF_R(1.0));
+    mf_real a = MF_SQRT(ax * ay);
+    return mf_transformed(mf_gtr(a, gamma), mf_mat2_make(a / ax, MF_R(0.0), MF_R(0.0), a / ay));
+}
+
+/* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
+MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
+{
+    mf_vec3 u;
+    mf_real l2;
+    if (!d->transformed) return mf__D_base(d, wm);
+    if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
+    u = mf_mat2_apply_transpose(d->M, wm);
+    l2 = mf_dot(u, u);
+    return d->det / (l2 * l2) * mf__D_base(d, mf_scale(u, MF_R(1.0) / MF_SQRT(l2)));
+}
+
+/* Deformation tracking (thesis Sec. 4.4.1). The tension matrix T = D R^-1 maps
+ * the edges of a rest triangle to those of its deformed state, both expressed
+ * in the triangle's orthonormal tangent frame (U along the texture u axis,
+ * V along the orthogonalized texture v axis);
+ * use it as M in mf_transformed with the shading frame's x axis along U.
+ * rest_edges and deformed_edges hold the two edge vectors as columns. */
+MF_INLINE mf_result mf_tension_matrix(mf_mat2 rest_edges, mf_mat2 deformed_edges, mf_mat2 *T)
+{
+    mf_mat2 Ri;
+    if (!T) return MF_ERROR_INVALID_ARGUMENT;
+    if (!mf_transform_valid(rest_edges) || !mf_transform_valid(deformed_edges)) return MF_ERROR_INVALID_DATA;
+    Ri = mf_mat2_inverse(rest_edges);
+    *T = mf_mat2_mul(deformed_edges, Ri);
+    return MF_SUCCESS;
+}
+
+/* Edges p1 - p0 and p2 - p0 of a triangle in its orthonormal tangent frame
+ * (U, V): U along dP/du, V the part of dP/dv orthogonal to U (texture
+ * coordinates uv = {u0, v0, u1, v1, u2, v2}), so the frame follows the
+ * texture, not the winding. */
+MF_INLINE mf_result mf__triangle_edges(const mf_vec3 p[3], const mf_real uv[6], mf_mat2 *E)
+{
+    mf_vec3 e1 = mf_add(p[1], mf_scale(p[0], MF_R(-1.0))), e2 = mf_add(p[2], mf_scale(p[0], MF_R(-1.0)));
+    mf_real du1 = uv[2] - uv[0], dv1 = uv[3] - uv[1], du2 = uv[4] - uv[0], dv2 = uv[5] - uv[1];
+    mf_real det = du1 * dv2 - du2 * dv1;
+    mf_vec3 U, V;
+    if (!(MF_FABS(det) > MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+    /* [e1 e2] = [dP/du dP/dv] [du1 du2; dv1 dv2] */
+    /* dP/du and dP/dv up to the factor 1/det, whose sign matters */
+    U = mf_add(mf_scale(e1, dv2), mf_scale(e2, -dv1));
+    V = mf_add(mf_scale(e2, du1), mf_scale(e1, -du2));
+    if (det < MF_R(0.0)) { U = mf_scale(U, MF_R(-1.0)); V = mf_scale(V, MF_R(-1.0)); }
+    U = mf_normalize(U);
+    V = mf_normalize(mf_add(V, mf_scale(U, -mf_dot(V, U))));
+    if (mf_dot(U, U) == MF_R(0.0) || mf_dot(V, V) == MF_R(0.0)) return MF_ERROR_INVALID_DATA;
+    *E = mf_mat2_make(mf_dot(e1, U), mf_dot(e2, U), mf_dot(e1, V), mf_dot(e2, V));
+    return MF_SUCCESS;
+}
+
+/* Tension matrix of a triangle from its rest and deformed vertex positions
+ * and its texture coordinates (shared by both states). */
+MF_INLINE mf_result mf_tension_from_triangles(const mf_vec3 rest[3], const mf_vec3 deformed[3],
+                                              const mf_real uv[6], mf_mat2 *T)
+{
+    mf_mat2 R, D;
+    mf_result r;
+    if (!rest || !deformed || !uv || !T) return MF_ERROR_INVALID_ARGUMENT;
+    r = mf__triangle_edges(rest, uv, &R);
+    if (r != MF_SUCCESS) return r;
+    r = mf__triangle_edges(deformed, uv, &D);
+    if (r != MF_SUCCESS) return r;
+    return mf_tension_matrix(R, D, T);
+}
+
+/* Jacobian of a nonlinear map (u, v) -> map(u, v) by central differences of
+ * step h: the local linear transform of Fig. 4.2 (bottom right). */
+typedef void (*mf_map2_fn)(mf_real u, mf_real v, mf_real out[2], void *ctx);
+MF_INLINE mf_mat2 mf_jacobian_2d(mf_map2_fn map, void *ctx, mf_real u, mf_real v, mf_real h)
+{
+    mf_real a[2], b[2], c[2], e[2];
+    map(u + h, v, a, ctx); map(u - h, v, b, ctx);
+    map(u, v + h, c, ctx); map(u, v - h, e, ctx);
+    return mf_mat2_make((a[0] - b[0]) / (MF_R(2.0) * h), (c[0] - e[0]) / (MF_R(2.0) * h),
+                        (a[1] - b[1]) / (MF_R(2.0) * h), (c[1] - e[1]) / (MF_R(2.0) * h));
+}
+
+/* ======================================================================== */
+/* == 7. Smith masking                                                      */
 /* ======================================================================== */
 /* Smith: G1(w, m) = chi+(w.m) / (1 + Lambda(w)) (thesis Eq. 3.8 with the
  * average visibility S = 1 / (1 + Lambda)), which satisfies the masking
@@ -718,9 +914,10 @@ MF_SLOW mf_real mf__lambda_other(const mf_ndf *d, mf_vec3 w)
 }
 
 /* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. GGX inline,
- * the other kinds out of line. */
+ * the other kinds out of line; transformed kinds at M^-1 w (Eq. 4.4). */
 MF_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
 {
+    if (d->transformed) w = mf_normalize(mf_mat2_apply(d->Minv, w));
     if (d->type == MF_NDF_GGX) return mf_ggx_lambda(d->ax, d->ay, w);
     return mf__lambda_other(d, w);
 }
@@ -766,7 +963,7 @@ MF_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
 }
 
 /* ======================================================================== */
-/* == 7. Sampling                                                           */
+/* == 8. Sampling                                                           */
 /* ======================================================================== */
 /* mf_sample_D draws wm with density D(wm) wm.z (Walter et al. 2007): the
  * radius of the slope from the inverse CDF, the azimuth uniform, stretched by
@@ -1077,8 +1274,8 @@ MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_re
     return mf_scale(h, MF_R(1.0) / MF_SQRT(l2));
 }
 
-/* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth. */
-MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+/* wm with density D(wm) wm.z of the untransformed distribution. */
+MF_INLINE mf_vec3 mf__sample_D_base(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real phi = MF_R(2.0) * MF_PI * u2, cp = MF_COS(phi), sp = MF_SIN(phi), r2;
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
@@ -1110,16 +1307,33 @@ MF_SLOW mf_vec3 mf__sample_visible_other(const mf_ndf *d, mf_vec3 w, mf_real u1,
     }
 }
 
+/* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
+ * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
+MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    mf_vec3 m = mf__sample_D_base(d, u1, u2);
+    if (!d->transformed) return m;
+    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+}
+
 /* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
- * inline, the other kinds out of line. */
+ * inline, the other kinds out of line. Transformed kinds: the base's visible
+ * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). */
 MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
-    if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
-    return mf__sample_visible_other(d, w, u1, u2);
+    mf_vec3 m;
+    if (d->transformed) {
+        if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+        w = mf_normalize(mf_mat2_apply(d->Minv, w));
+    }
+    if (d->type == MF_NDF_GGX) m = mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+    else m = mf__sample_visible_other(d, w, u1, u2);
+    if (!d->transformed) return m;
+    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
 
 /* ======================================================================== */
-/* == 8. Specular microfacet BRDF                                           */
+/* == 9. Specular microfacet BRDF                                           */
 /* ======================================================================== */
 /* f(wo, wi) = D(wh) G2(wo, wi, wh) / (4 |wo.z| |wi.z|) (Walter et al. 2007
  * Eq. 20 without Fresnel), sampled through the visible normals of wo
@@ -1170,7 +1384,7 @@ MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 }
 
 /* ======================================================================== */
-/* == 9. Non-inline functions                                               */
+/* == 10. Non-inline functions                                              */
 /* ======================================================================== */
 
 /* A short English name of a result code. */

@@ -50,6 +50,14 @@ int mft_finite(double x);
 
 mf_vec3 mft_dir(double theta, double phi);
 
+/* Shared checks (test_sampling.c, test_brdf.c): chi-square of mf_sample_D
+ * (visible = 0) or mf_sample_visible against their densities; BRDF sampling
+ * against mf_brdf_pdf, weights, reciprocity and the white furnace. rescale /
+ * spline: the density's normalization is not tested (GTR spline Lambda). */
+void mft_sampler_check(const char *name, const mf_ndf *d, mf_vec3 v, int visible, int n, int rescale,
+                       unsigned long long seed);
+void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long long seed, int spline);
+
 /* Test modules. */
 void test_core(void);
 void test_ndf(void);
@@ -58,6 +66,7 @@ void test_brdf(void);
 void test_robust(void);
 void test_float(void);
 void test_tu2(void);
+void test_ltmd(void);
 
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;

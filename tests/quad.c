@@ -88,28 +88,44 @@ static mf_vec3 m_of_slope(double x, double y)
  * distribution here is isotropic at unit scale; the visible-normal integrals
  * rotate (X, Y) so that X lies along (ax v.x, ay v.y), which turns the
  * visibility kink v.m = 0 into the straight bound X = v.z / |(ax v.x, ay v.y)|. */
-typedef struct { const mf_ndf *d; double cp, sp, vz, s; mf_vec3 v; int what; } vis_ctx;
+typedef struct { const mf_ndf *d; double A[4], jac, cp, sp, vz, s; mf_vec3 v; int what; } vis_ctx;
+
+/* slopes = A (X, Y): A = M^-T diag(ax, ay) (Eq. 4.16: the transformed slope is
+ * M^-T times the base slope), row-major */
+void mft_slope_map(const mf_ndf *d, double A[4])
+{
+    double i00 = 1, i01 = 0, i10 = 0, i11 = 1;
+    if (d->transformed) { i00 = d->Minv.m00; i01 = d->Minv.m01; i10 = d->Minv.m10; i11 = d->Minv.m11; }
+    /* (Minv)^T = [i00 i10; i01 i11] */
+    A[0] = i00 * d->ax; A[1] = i10 * d->ay;
+    A[2] = i01 * d->ax; A[3] = i11 * d->ay;
+}
 
 static double f_norm(double X, double Y, void *p)
 {
-    const mf_ndf *d = (const mf_ndf *)p;
-    double x = d->ax * X, y = d->ay * Y;
+    const vis_ctx *c = (const vis_ctx *)p;
+    double x = c->A[0] * X + c->A[1] * Y, y = c->A[2] * X + c->A[3] * Y;
     double c2 = 1.0 / (1.0 + x * x + y * y);
-    return (double)mf_D(d, m_of_slope(x, y)) * c2 * c2 * d->ax * d->ay;   /* D cos^4 = P22 */
+    return (double)mf_D(c->d, m_of_slope(x, y)) * c2 * c2 * c->jac;   /* D cos^4 = P22 */
 }
 
 double mft_scale(const mf_ndf *d) { return d->ax > d->ay ? d->ax : d->ay; }
 
 double mft_norm_integral(const mf_ndf *d)
 {
-    return mft_integrate2(f_norm, (void *)d, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, 1.0, 1.0, 48);
+    vis_ctx c;
+    c.d = d;
+    mft_slope_map(d, c.A);
+    c.jac = fabs(c.A[0] * c.A[3] - c.A[1] * c.A[2]);
+    return mft_integrate2(f_norm, &c, -HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, 1.0, 1.0, 48);
 }
 
 static double f_vis(double Xt, double Yt, void *p)
 {
     vis_ctx *c = (vis_ctx *)p;
-    double x = c->d->ax * (c->cp * Xt - c->sp * Yt), y = c->d->ay * (c->sp * Xt + c->cp * Yt);
-    double c2 = 1.0 / (1.0 + x * x + y * y), jac = c->d->ax * c->d->ay;
+    double X = c->cp * Xt - c->sp * Yt, Y = c->sp * Xt + c->cp * Yt;
+    double x = c->A[0] * X + c->A[1] * Y, y = c->A[2] * X + c->A[3] * Y;
+    double c2 = 1.0 / (1.0 + x * x + y * y), jac = c->jac;
     mf_vec3 m = m_of_slope(x, y);
     double proj = c->vz - Xt * c->s;             /* (v.m) / cos(theta_m) */
     if (proj <= 0.0) return 0.0;
@@ -121,7 +137,11 @@ static double f_vis(double Xt, double Yt, void *p)
 double mft_visible_integral(const mf_ndf *d, mf_vec3 v, int what)
 {
     vis_ctx c;
-    double nx = d->ax * v.x, ny = d->ay * v.y, s = sqrt(nx * nx + ny * ny);
+    double nx, ny, s;
+    mft_slope_map(d, c.A);
+    c.jac = fabs(c.A[0] * c.A[3] - c.A[1] * c.A[2]);
+    /* slope . v_xy = X . (A^T v_xy): the visibility bound is straight along A^T v_xy */
+    nx = c.A[0] * v.x + c.A[2] * v.y; ny = c.A[1] * v.x + c.A[3] * v.y; s = sqrt(nx * nx + ny * ny);
     c.d = d; c.v = v; c.vz = v.z; c.s = s; c.what = what;
     if (s > 0.0) { c.cp = nx / s; c.sp = ny / s; } else { c.cp = 1.0; c.sp = 0.0; }
     return mft_integrate2(f_vis, &c, -HUGE_VAL, s > 0.0 ? c.vz / s : HUGE_VAL, -HUGE_VAL, HUGE_VAL, 1.0, 1.0, 48);
@@ -129,13 +149,37 @@ double mft_visible_integral(const mf_ndf *d, mf_vec3 v, int what)
 
 /* ---- cells over the hemisphere for chi-square tests ---- */
 
+void mft_cells_init(mft_cells *c, const mf_ndf *d, double median, int na, int np)
+{
+    int i;
+    mft_slope_map(d, c->A);
+    for (i = 0; i < 4; ++i) c->A[i] *= median;
+    c->na = na; c->np = np;
+}
+
+/* normalized slope radius of m for d */
+double mft_norm_radius(const mf_ndf *d, mf_vec3 m)
+{
+    double A[4], sx, sy, det, X, Y;
+    if (!(m.z > 0)) return 1e30;
+    mft_slope_map(d, A);
+    sx = -m.x / m.z; sy = -m.y / m.z; det = A[0] * A[3] - A[1] * A[2];
+    X = (A[3] * sx - A[1] * sy) / det;
+    Y = (-A[2] * sx + A[0] * sy) / det;
+    return sqrt(X * X + Y * Y);
+}
+
 int mft_cell_of(const mft_cells *c, mf_vec3 m)
 {
     const double pi = 3.14159265358979323846;
     double X, Y, a, p;
     int ia, ip;
     if (!(m.z > 0)) return -1;
-    X = -m.x / (m.z * c->bx); Y = -m.y / (m.z * c->by);
+    {
+        double sx = -m.x / m.z, sy = -m.y / m.z, det = c->A[0] * c->A[3] - c->A[1] * c->A[2];
+        X = (c->A[3] * sx - c->A[1] * sy) / det;
+        Y = (-c->A[2] * sx + c->A[0] * sy) / det;
+    }
     a = atan(sqrt(X * X + Y * Y)) * 2.0 / pi;
     p = atan2(Y, X); if (p < 0) p += 2.0 * pi;
     ia = (int)(a * c->na); ip = (int)(p / (2.0 * pi) * c->np);
@@ -161,13 +205,14 @@ void mft_cell_probs(const mft_cells *c, double (*dens)(mf_vec3, void *), void *c
                     double a = ia < na - 1 ? (ia + sa) / na : 1.0 - pow(1.0 - sa, 4.0) / na;
                     double psi = (ip + (j / 6 + gx[j % 6]) / sub) / np * 2.0 * pi;
                     double R = tan(0.5 * pi * a), dR = 0.5 * pi / (cos(0.5 * pi * a) * cos(0.5 * pi * a));
-                    double x = c->bx * R * cos(psi), y = c->by * R * sin(psi);
+                    double X = R * cos(psi), Y = R * sin(psi);
+                    double x = c->A[0] * X + c->A[1] * Y, y = c->A[2] * X + c->A[3] * Y;
                     double cz = 1.0 / sqrt(1.0 + x * x + y * y);
                     mf_vec3 m = mf_vec3_make((mf_real)(-x * cz), (mf_real)(-y * cz), (mf_real)cz);
                     if (ia == na - 1) da = 4.0 * pow(1.0 - sa, 3.0) / na;
                     /* dm = cos^3 dslope, dslope = bx by R dR dpsi */
                     s += gw[i % 6] * gw[j % 6] / (sub * sub) * dens(m, ctx) *
-                         cz * cz * cz * c->bx * c->by * R * dR * (2.0 * pi / np) * da;
+                         cz * cz * cz * fabs(c->A[0] * c->A[3] - c->A[1] * c->A[2]) * R * dR * (2.0 * pi / np) * da;
                 }
             prob[ia * np + ip] = s;
         }

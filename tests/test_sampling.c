@@ -33,7 +33,7 @@ static mf_vec3 draw(const mf_ndf *d, mf_vec3 v, int visible, mft_rng *r)
     return visible ? mf_sample_visible(d, v, (mf_real)u1, (mf_real)u2) : mf_sample_D(d, (mf_real)u1, (mf_real)u2);
 }
 
-static void chi2_test(const char *name, const mf_ndf *d, mf_vec3 v, int visible, int n, int rescale, unsigned long long seed)
+void mft_sampler_check(const char *name, const mf_ndf *d, mf_vec3 v, int visible, int n, int rescale, unsigned long long seed)
 {
     static double obs[NA * NP], e[NA * NP], rr[2001];
     dens_ctx c;
@@ -48,11 +48,10 @@ static void chi2_test(const char *name, const mf_ndf *d, mf_vec3 v, int visible,
     mft_seed(&r, seed + 999);
     for (i = 0; i < 2001; ++i) {
         mf_vec3 m = draw(d, v, visible, &r);
-        double X = m.x / (d->ax * m.z), Y = m.y / (d->ay * m.z);
-        rr[i] = m.z > 0 ? sqrt(X * X + Y * Y) : 1e30;
+        rr[i] = mft_norm_radius(d, m);
     }
     med = mft_median(rr, 2001);
-    cells.na = NA; cells.np = NP; cells.bx = d->ax * med; cells.by = d->ay * med;
+    mft_cells_init(&cells, d, med, NA, NP);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
         mf_vec3 m = draw(d, v, visible, &r);
@@ -94,9 +93,9 @@ void test_sampling(void)
         mf_ndf d = mft_make(cs);
         int slow = cs->kind == MF_NDF_GTR || cs->kind == MF_NDF_STUDENT_T;
         int n = slow ? 40000 : 200000;
-        chi2_test(cs->name, &d, mf_vec3_make(0, 0, 1), 0, 200000, 0, 11 + i);
+        mft_sampler_check(cs->name, &d, mf_vec3_make(0, 0, 1), 0, 200000, 0, 11 + i);
         for (j = 0; j < 4; ++j)
-            chi2_test(cs->name, &d, mft_dir(thetas[j], 0.4 + j), 1, n, is_spline(cs), 100 + 7 * i + j);
+            mft_sampler_check(cs->name, &d, mft_dir(thetas[j], 0.4 + j), 1, n, is_spline(cs), 100 + 7 * i + j);
     }
     printf("    worst chi-square z over all sampling tests: %.2f (fail above 5)\n", worst_z);
 }
