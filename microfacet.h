@@ -616,18 +616,22 @@ MF_SLOW mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm)
     return MF_EXP(lr) / (MF_PI * d->ax * d->ay);
 }
 
-/* D(wm) of the untransformed distribution. */
+/* D of the untransformed distribution at the direction of wm, times |wm|^-4:
+ * equal to D(wm) for a unit wm, and homogeneous of degree -4 so that the
+ * transformed D (Eq. 4.14) needs no normalization. The Beckmann, GGX and
+ * Student-t formulas have this form already. */
 MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
     case MF_NDF_BECKMANN: return mf_beckmann_D(d->ax, d->ay, wm);
     case MF_NDF_GGX: return mf_ggx_D(d->ax, d->ay, wm);
     case MF_NDF_GTR: {
-        mf_real s2, den;
+        mf_real s2, l2, den;
         if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
         s2 = wm.x * wm.x + wm.y * wm.y;
-        den = s2 + d->ax * d->ax * wm.z * wm.z;  /* 1 + (a^2 - 1) cos^2 for unit wm */
-        return d->c[MF__GTR_NORM] / MF_POW(den, d->gamma);
+        l2 = s2 + wm.z * wm.z;
+        den = (s2 + d->ax * d->ax * wm.z * wm.z) / l2;  /* 1 + (a^2 - 1) cos^2 */
+        return d->c[MF__GTR_NORM] / (MF_POW(den, d->gamma) * l2 * l2);
     }
     case MF_NDF_STUDENT_T: return mf__student_t_D(d, wm);
     default: return MF_R(0.0);
@@ -714,13 +718,9 @@ MF_INLINE mf_ndf mf_gtr_anisotropic(mf_real alpha_x, mf_real alpha_y, mf_real ga
 /* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
 MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
 {
-    mf_vec3 u;
-    mf_real l2;
     if (!d->transformed) return mf__D_base(d, wm);
-    if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
-    u = mf_mat2_apply_transpose(d->M, wm);
-    l2 = mf_dot(u, u);
-    return d->det / (l2 * l2) * mf__D_base(d, mf_scale(u, MF_R(1.0) / MF_SQRT(l2)));
+    /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m) */
+    return d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
 }
 
 /* Deformation tracking (thesis Sec. 4.4.1). The tension matrix T = D R^-1 maps
@@ -917,7 +917,8 @@ MF_SLOW mf_real mf__lambda_other(const mf_ndf *d, mf_vec3 w)
  * the other kinds out of line; transformed kinds at M^-1 w (Eq. 4.4). */
 MF_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
 {
-    if (d->transformed) w = mf_normalize(mf_mat2_apply(d->Minv, w));
+    /* Lambda depends on w only through tan(theta) and phi: no normalization */
+    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
     if (d->type == MF_NDF_GGX) return mf_ggx_lambda(d->ax, d->ay, w);
     return mf__lambda_other(d, w);
 }
@@ -1256,22 +1257,30 @@ MF_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, 
     return mf_normalize(mf_vec3_make(-ax * x, -ay * y, MF_R(1.0)));
 }
 
-/* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3). */
-MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+/* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3), before the
+ * final normalization; w need not be unit. (0,0,1) for degenerate input. */
+MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 v, h;
     mf_real phi, z, s, l2;
-    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     v = mf_vec3_make(ax * w.x, ay * w.y, w.z);
-    v = mf_scale(v, MF_R(1.0) / MF_SQRT(mf_dot(v, v)));
+    l2 = mf_dot(v, v);
+    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
     phi = MF_R(2.0) * MF_PI * u1;
     z = (MF_R(1.0) - u2) * (MF_R(1.0) + v.z) - v.z;          /* cap of the visible hemisphere */
     s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
     h = mf_vec3_make(s * MF_COS(phi) + v.x, s * MF_SIN(phi) + v.y, z + v.z);
     h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
-    l2 = mf_dot(h, h);
-    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    return mf_scale(h, MF_R(1.0) / MF_SQRT(l2));
+    if (!(mf_dot(h, h) > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    return h;
+}
+MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 h;
+    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    h = mf__ggx_vndf_unnormalized(ax, ay, w, u1, u2);
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
 /* wm with density D(wm) wm.z of the untransformed distribution. */
@@ -1322,13 +1331,14 @@ MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
-    if (d->transformed) {
-        if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-        w = mf_normalize(mf_mat2_apply(d->Minv, w));
+    if (!d->transformed) {
+        if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+        return mf__sample_visible_other(d, w, u1, u2);
     }
-    if (d->type == MF_NDF_GGX) m = mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    w = mf_mat2_apply(d->Minv, w);   /* the samplers normalize their view themselves */
+    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2);
     else m = mf__sample_visible_other(d, w, u1, u2);
-    if (!d->transformed) return m;
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
 

@@ -187,6 +187,32 @@ int main(void)
         printf("bench %s_brdf_pdf %.2f\n", ks[k].name, run(b_brdf_pdf, d));
         printf("bench %s_brdf_sample_and_weight %.2f\n", ks[k].name, run(b_brdf_sample, d));
     }
+    /* linearly transformed microsurfaces: transformed vs plain, in pairs */
+    for (k = 0; k < 5; ++k) {
+        const mf_ndf *d = &ks[k].d;
+        mf_ndf t = mf_transformed(*d, mf_mat2_make(MF_R(1.5), MF_R(0.3), MF_R(-0.2), MF_R(0.8)));
+        mf_ndf id = mf_transformed(*d, mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0)));
+        bench_fn fns[4];
+        const char *names[4];
+        int f;
+        fns[0] = b_D; names[0] = "D";
+        fns[1] = b_G2; names[1] = "G2";
+        fns[2] = b_sample_D; names[2] = "sample_D";
+        fns[3] = b_vndf; names[3] = "sample_visible";
+        for (f = 0; f < 4; ++f) {
+            double tp, tt, ti;
+            if (k >= 2 && f == 3) continue;   /* numerical samplers: ratio is noise-free enough below */
+            run_pair(fns[f], fns[f], d, &tp, &tt);
+            run_pair(fns[f], fns[f], &t, &tp, &tt);
+            {
+                double a, b2;
+                run_pair(fns[f], fns[f], d, &a, &b2);
+                tp = a < b2 ? a : b2;
+            }
+            run_pair(fns[f], fns[f], &id, &ti, &ti);
+            printf("bench %s_transformed_%s %.2f ratio=%.3f identity_ratio=%.3f\n", ks[k].name, names[f], tt, tt / tp, ti / tp);
+        }
+    }
     printf("bench fresnel_conductor %.2f\n", run(b_fresnel, &ks[0].d));
     return g_sink == g_sink ? 0 : 1;
 }

@@ -11,6 +11,7 @@ __global__ void mf_kernel(const float *u, float *out, int n)
     k[1] = mf_ggx(MF_R(0.2), MF_R(0.3));
     k[2] = mf_gtr(MF_R(0.2), MF_R(1.5));
     k[3] = mf_student_t(MF_R(0.2), MF_R(0.3), MF_R(3.0));
+    k[i & 3] = (i & 4) ? mf_transformed(k[i & 3], mf_mat2_make(MF_R(1.0), MF_R(2.0), MF_R(0.0), MF_R(1.0))) : k[i & 3];
     const mf_ndf *d = &k[i & 3];
     mf_vec3 wo = mf_normalize(mf_vec3_make((mf_real)u[i], MF_R(0.2), MF_R(0.8)));
     mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);

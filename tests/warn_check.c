@@ -39,6 +39,17 @@ int main(void)
     s += mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo) + mf_erfinv(MF_R(0.3));
     s += mf_fresnel_dielectric(MF_R(0.5), MF_R(1.5)) + mf_fresnel_conductor(MF_R(0.5), MF_R(0.2), MF_R(3.0));
     s += mf_fresnel_schlick(MF_R(0.04), MF_R(0.5));
+    {
+        mf_mat2 T;
+        mf_vec3 tri[3];
+        mf_real uv[6] = { MF_R(0.0), MF_R(0.0), MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0) };
+        mf_ndf x = mf_stretched(mf_transformed(k[2], mf_mat2_make(MF_R(1.0), MF_R(2.0), MF_R(0.0), MF_R(1.0))), MF_R(0.3));
+        mf_ndf a = mf_gtr_anisotropic(MF_R(0.1), MF_R(0.3), MF_R(1.5));
+        tri[0] = mf_vec3_make(0, 0, 0); tri[1] = mf_vec3_make(1, 0, 0); tri[2] = mf_vec3_make(0, 1, 0);
+        s += mf_D(&x, wo) + mf_lambda(&a, wo) + mf_sample_visible(&x, wo, MF_R(0.5), MF_R(0.5)).z;
+        s += (mf_real)(mf_tension_from_triangles(tri, tri, uv, &T) == MF_SUCCESS) + mf_mat2_det(mf_mat2_transpose(T));
+        s += (mf_real)mf_transform_valid(mf_mat2_inverse(T)) + mf_stretch_matrix(MF_R(0.2)).m00;
+    }
     mf_frame(wo, &t, &b);
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
     return s == s ? 0 : 1;
