@@ -4,7 +4,8 @@
  *   normalization (Eq. 3.5), masking constraint (Eq. 3.9) for views up to 89
  *   degrees, integral of D_visible, chi-square of both samplers, the BRDF.
  * Tolerances as in test_ndf: 1e-7 relative in double where the base is exact
- * (measured ~1e-9); GTR at non-integer gamma carries its spline error (1%);
+ * (measured ~1e-9); GTR at non-integer gamma carries its spline error (6%,
+ * the gamma < 1 bound of test_ndf);
  * float builds 2e-4 (1e-3 for near-singular M, whose inverse loses digits).
  * Also: diagonal M on shape-invariant kinds equals elliptical anisotropy
  * (Eq. 4.22-4.23); stretch matrix properties (Eq. 4.25); composition;
@@ -35,7 +36,7 @@ static void integrals(const char *name, const mf_ndf *d, int spline, int near_si
     const double thetas[] = { 0.3, 1.0, 1.5533 };
     char msg[400];
     int j;
-    double tol = spline ? 0.01 : near_singular ? MFT_TOL(1e-7, 1e-3) : MFT_TOL(1e-7, 2e-4);
+    double tol = spline ? 0.06 : near_singular ? MFT_TOL(1e-7, 1e-3) : MFT_TOL(1e-7, 2e-4);
     snprintf(msg, sizeof msg, "transformed normalization %s", name);
     MFT_NEAR(mft_norm_integral(d), 1.0, near_singular ? MFT_TOL(1e-7, 1e-3) : MFT_TOL(1e-7, 2e-4), 0.0, msg);
     for (j = 0; j < 3; ++j) {
@@ -64,15 +65,23 @@ static void test_random_transforms(void)
     const char *only = getenv("MFT_CASE");
     mft_seed(&r, 4242);
     for (b = 0; b < 6; ++b) {
-        int spline = bases[b].kind == MF_NDF_GTR && fabs(bases[b].gamma - floor(bases[b].gamma + 0.5)) > 1e-9;
         int slow = bases[b].kind == MF_NDF_GTR || bases[b].kind == MF_NDF_STUDENT_T;
         for (k = 0; k < 3; ++k) {
-            int ns = k == 2;
+            int ns = k == 2, spline;
             mf_mat2 M = random_M(&r, ns);
-            mf_ndf d = mf_transformed(mft_make(&bases[b]), M);
+            mft_case c = bases[b];
+            mf_ndf d;
+            if (k == 1) {   /* random parameters of the same kind */
+                double f = 0.5 + mft_u01(&r);
+                c.ax *= f; c.ay *= 0.5 + mft_u01(&r);
+                if (c.kind == MF_NDF_GTR) { c.ay = c.ax; c.gamma = 0.5 + 3.4 * mft_u01(&r); }
+                if (c.kind == MF_NDF_STUDENT_T) c.gamma = 1.7 + 6.0 * mft_u01(&r);
+            }
+            spline = c.kind == MF_NDF_GTR && fabs(c.gamma - floor(c.gamma + 0.5)) > 1e-9;
+            d = mf_transformed(mft_make(&c), M);
             if (only && !strstr(bases[b].name, only)) continue;
-            snprintf(name, sizeof name, "%s M=[%.2f %.2f; %.2f %.2f]", bases[b].name, (double)M.m00, (double)M.m01,
-                     (double)M.m10, (double)M.m11);
+            snprintf(name, sizeof name, "%s a=%.3f,%.3f g=%.3f M=[%.2f %.2f; %.2f %.2f]", bases[b].name, c.ax, c.ay, c.gamma,
+                     (double)M.m00, (double)M.m01, (double)M.m10, (double)M.m11);
             MFT_CHECK(d.transformed == 1, "random M accepted");
             integrals(name, &d, spline, ns);
             mft_sampler_check(name, &d, mf_vec3_make(0, 0, 1), 0, slow ? 30000 : 100000, 0, 900 + 10 * b + k);
