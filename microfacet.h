@@ -27,7 +27,10 @@
  *   == 7. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
  *   == 8. Sampling: NDF (D cos) and visible normals (VNDF) for every distribution
  *   == 9. Specular microfacet BRDF: eval, sample, pdf
- *   == 10. Declarations of non-inline functions; implementation section
+ *   == 10. Linearly Transformed Cosines: eval, sample, polygon integration with
+ *          horizon clipping, vector form factor, sphere lights, multi-scale
+ *          roughness
+ *   == 11. Declarations of non-inline functions; implementation section
  *
  * CONVENTIONS
  *
@@ -1394,7 +1397,240 @@ MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 }
 
 /* ======================================================================== */
-/* == 10. Non-inline functions                                              */
+/* == 10. Linearly Transformed Cosines                                      */
+/* ======================================================================== */
+/* Heitz, Dupuy, Hill, Neubelt 2016; Tao et al. 2021 Eq. 1: a clamped cosine
+ * D_o(w) = max(0, w.z)/pi transformed by a 3x3 matrix M,
+ *   D(w) = D_o(M^-1 w / |M^-1 w|) |det M^-1| / |M^-1 w|^3,
+ * integrates to 1 over the sphere, and its integral over a polygon is the
+ * cosine form factor of the polygon transformed by M^-1 (Heitz 2017), clipped
+ * exactly at the horizon. Polygons are given by their vertices relative to the
+ * shading point (any length); the front face is the one whose vertices run
+ * counterclockwise seen from the shading point. */
+
+typedef struct mf_ltc {
+    mf_real M[9];       /* row-major */
+    mf_real Minv[9];
+    mf_real det_inv;    /* |det M^-1| */
+} mf_ltc;
+
+MF_INLINE mf_vec3 mf__mat3_apply(const mf_real *a, mf_vec3 v)
+{
+    return mf_vec3_make(a[0] * v.x + a[1] * v.y + a[2] * v.z, a[3] * v.x + a[4] * v.y + a[5] * v.z,
+                        a[6] * v.x + a[7] * v.y + a[8] * v.z);
+}
+
+/* Inverse of a row-major 3x3 matrix; returns its determinant (0: singular). */
+MF_INLINE mf_real mf__mat3_inverse(const mf_real *a, mf_real *inv)
+{
+    mf_real c0 = a[4] * a[8] - a[5] * a[7], c1 = a[5] * a[6] - a[3] * a[8], c2 = a[3] * a[7] - a[4] * a[6];
+    mf_real det = a[0] * c0 + a[1] * c1 + a[2] * c2, r;
+    if (!(det != MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return MF_R(0.0);
+    r = MF_R(1.0) / det;
+    inv[0] = c0 * r; inv[1] = (a[2] * a[7] - a[1] * a[8]) * r; inv[2] = (a[1] * a[5] - a[2] * a[4]) * r;
+    inv[3] = c1 * r; inv[4] = (a[0] * a[8] - a[2] * a[6]) * r; inv[5] = (a[2] * a[3] - a[0] * a[5]) * r;
+    inv[6] = c2 * r; inv[7] = (a[1] * a[6] - a[0] * a[7]) * r; inv[8] = (a[0] * a[4] - a[1] * a[3]) * r;
+    return det;
+}
+
+/* The LTC of the row-major matrix m[9]. A singular or non-finite M gives the
+ * clamped cosine itself (M = I). */
+MF_INLINE mf_ltc mf_ltc_from_matrix9(const mf_real m[9])
+{
+    mf_ltc l;
+    mf_real det;
+    int i;
+    for (i = 0; i < 9; ++i) l.M[i] = m[i];
+    det = mf__mat3_inverse(l.M, l.Minv);
+    if (!(MF_FABS(det) > MF_R(1e-20))) {
+        for (i = 0; i < 9; ++i) l.M[i] = l.Minv[i] = (i % 4 == 0) ? MF_R(1.0) : MF_R(0.0);
+        det = MF_R(1.0);
+    }
+    l.det_inv = MF_R(1.0) / MF_FABS(det);
+    return l;
+}
+
+/* The same from M[row][col] (the API form; in C, passing a non-const array
+ * to a const 2D-array parameter draws a -Wpedantic warning before C23:
+ * mf_ltc_from_matrix9 avoids it). */
+MF_INLINE mf_ltc mf_ltc_from_matrix(const mf_real M[3][3])
+{
+    mf_real m[9];
+    int i;
+    for (i = 0; i < 9; ++i) m[i] = M[i / 3][i % 3];
+    return mf_ltc_from_matrix9(m);
+}
+
+/* The LTC of the usual 4/5-coefficient tables, which store the inverse
+ * M^-1 = [a 0 b; 0 c 0; d 0 e] (e = 1 in 4-coefficient tables). */
+MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d, mf_real e)
+{
+    mf_real inv[3][3], m[9], det;
+    mf_ltc l;
+    int i;
+    inv[0][0] = a; inv[0][1] = 0; inv[0][2] = b;
+    inv[1][0] = 0; inv[1][1] = c; inv[1][2] = 0;
+    inv[2][0] = d; inv[2][1] = 0; inv[2][2] = e;
+    for (i = 0; i < 9; ++i) m[i] = inv[i / 3][i % 3];
+    det = mf__mat3_inverse(m, l.M);
+    if (!(MF_FABS(det) > MF_R(1e-20))) {
+        const mf_real I[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        return mf_ltc_from_matrix9(I);
+    }
+    for (i = 0; i < 9; ++i) l.Minv[i] = m[i];
+    l.det_inv = MF_FABS(det);
+    return l;
+}
+
+/* D(w), per steradian: |det M^-1| (M^-1 w).z / (pi |M^-1 w|^4) where positive. */
+MF_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
+{
+    mf_vec3 v = mf__mat3_apply(l->Minv, w);
+    mf_real l2 = mf_dot(v, v);
+    if (!(v.z > MF_R(0.0)) || !(l2 > MF_R(0.0))) return MF_R(0.0);
+    return l->det_inv * v.z / (MF_PI * l2 * l2);
+}
+
+/* A direction with density mf_ltc_eval: a cosine-distributed direction moved by M. */
+MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
+{
+    mf_real r = MF_SQRT(mf_clamp(u1, MF_R(0.0), MF_R(1.0))), phi = MF_R(2.0) * MF_PI * u2;
+    mf_vec3 w = mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));
+    return mf_normalize(mf__mat3_apply(l->M, w));
+}
+
+/* Integral of the cosine lobe's vector irradiance over the great arc from a to
+ * b (unit vectors): (theta / sin theta) (a x b), theta = atan2(|a x b|, a.b),
+ * accurate for tiny and for nearly antipodal arcs (no acos, no 1 - x^2). */
+MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+{
+    mf_vec3 c = mf_cross(a, b);
+    mf_real s = MF_SQRT(mf_dot(c, c)), d = mf_dot(a, b);
+    if (!(s > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    return mf_scale(c, MF_ATAN2(s, d) / s);
+}
+
+/* Signed cosine form factor (z component of the vector form factor, over
+ * 2 pi) of the polygon p[0..n-1] transformed by A (NULL: identity), clipped
+ * to z >= 0 on the fly: every edge is cut where it crosses the horizon and the
+ * exit and entry points are joined along the horizon, so no vertex buffer is
+ * needed and any n works. */
+MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
+{
+    int i, s = -1;
+    mf_real sum = MF_R(0.0);
+    mf_vec3 exit_pt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), a, b;
+    if (!p || n < 3) return MF_R(0.0);
+    for (i = 0; i < n; ++i) {
+        a = A ? mf__mat3_apply(A, p[i]) : p[i];
+        if (a.z > MF_R(0.0)) { s = i; break; }
+    }
+    if (s < 0) return MF_R(0.0);   /* entirely below the horizon */
+    a = A ? mf__mat3_apply(A, p[s]) : p[s];
+    for (i = 1; i <= n; ++i) {
+        int above_a = a.z > MF_R(0.0), above_b;
+        b = A ? mf__mat3_apply(A, p[(s + i) % n]) : p[(s + i) % n];
+        above_b = b.z > MF_R(0.0);
+        if (above_a && above_b) {
+            sum += mf__edge_vector(mf_normalize(a), mf_normalize(b)).z;
+        } else if (above_a || above_b) {
+            mf_real t = a.z / (a.z - b.z);
+            mf_vec3 x = mf_add(a, mf_scale(mf_add(b, mf_scale(a, MF_R(-1.0))), t));
+            x.z = MF_R(0.0);
+            x = mf_normalize(x);
+            if (above_a) {
+                sum += mf__edge_vector(mf_normalize(a), x).z;
+                exit_pt = x;
+            } else {
+                sum += mf__edge_vector(exit_pt, x).z;     /* along the horizon */
+                sum += mf__edge_vector(x, mf_normalize(b)).z;
+            }
+        }
+        a = b;
+    }
+    return sum * MF_R(0.15915494309189533577);   /* 1 / (2 pi) */
+}
+
+MF_INLINE mf_real mf__sided(mf_real ff, int two_sided)
+{
+    /* counterclockwise seen from the shading point is the front */
+    ff = -ff;
+    if (two_sided) return MF_FABS(ff);
+    return mf_max(ff, MF_R(0.0));
+}
+
+/* Integral of D over the spherical polygon seen through verts[0..n-1]
+ * (positions relative to the shading point, any length, n >= 3), clipped at
+ * the horizon; two_sided counts both faces of the polygon. */
+MF_INLINE mf_real mf_ltc_integrate(const mf_ltc *l, const mf_vec3 *verts, int n, int two_sided)
+{
+    return mf__sided(mf__polygon_form_factor(l->Minv, verts, n), two_sided);
+}
+
+/* Cosine form factor of a polygon: integral over it of max(0, w.z)/pi,
+ * clipped at the horizon (the irradiance of a unit-radiance light, / pi). */
+MF_INLINE mf_real mf_polygon_irradiance(const mf_vec3 *verts, int n, int two_sided)
+{
+    return mf__sided(mf__polygon_form_factor((const mf_real *)0, verts, n), two_sided);
+}
+
+/* Vector form factor F of a polygon (not clipped; Heitz 2017): F.z is its
+ * unclipped cosine form factor, |F| and F / |F| feed mf_sphere_form_factor. */
+MF_INLINE mf_vec3 mf_polygon_vector_form_factor(const mf_vec3 *verts, int n)
+{
+    mf_vec3 f = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    int i;
+    if (!verts || n < 3) return f;
+    for (i = 0; i < n; ++i) f = mf_add(f, mf__edge_vector(mf_normalize(verts[i]), mf_normalize(verts[(i + 1) % n])));
+    return mf_scale(f, MF_R(-0.15915494309189533577));
+}
+
+/* Cosine form factor of a uniform sphere light of angular radius sigma whose
+ * center lies at angle omega from the normal, clipped at the horizon
+ * (Snyder 1996), from F = its vector form factor: |F| = sin^2 sigma,
+ * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
+ * disk, it is the sphere approximation of their horizon-clipped form factor
+ * (Hill & Heitz 2016). */
+MF_INLINE mf_real mf_sphere_form_factor(mf_vec3 F)
+{
+    mf_real len = MF_SQRT(mf_dot(F, F)), s2, co, so, x, y, z;
+    if (!(len > MF_R(0.0))) return MF_R(0.0);
+    s2 = mf_min(len, MF_R(1.0));                 /* sin^2 sigma */
+    co = mf_clamp(F.z / len, MF_R(-1.0), MF_R(1.0));
+    so = MF_SQRT(MF_R(1.0) - co * co);
+    x = MF_SQRT(mf_max(MF_R(1.0) / s2 - MF_R(1.0), MF_R(0.0)));  /* cot sigma */
+    if (co >= MF_SQRT(s2)) return co * s2;      /* omega <= pi/2 - sigma: fully above */
+    if (co <= -MF_SQRT(s2)) return MF_R(0.0);    /* omega >= pi/2 + sigma: fully below */
+    y = so > MF_R(0.0) ? -x * co / so : MF_R(0.0);
+    y = mf_clamp(y, MF_R(-1.0), MF_R(1.0));
+    z = so * MF_SQRT(MF_R(1.0) - y * y);
+    return mf_max(((co * MF_ACOS(y) - x * z) * s2 + MF_ATAN2(z, x)) * MF_INV_PI, MF_R(0.0));
+}
+
+/* Multi-scale roughness (Tao et al. 2021). The meso-scale normals of a
+ * footprint, summarized by the length of their mean (an unnormalized mip-mapped
+ * normal), are an LTC with M = diag(a, a, 1), i.e. a GGX lobe of roughness a;
+ * Eq. 5 fits a from the mean length (result clamped to [0, 1]; a mean length
+ * below about 0.65 gives 1). */
+MF_INLINE mf_real mf_ltc_meso_alpha(mf_real mean_normal_length)
+{
+    mf_real b = mf_clamp(mean_normal_length, MF_R(0.0), MF_R(1.0)), b2 = b * b, b3 = b2 * b, b4 = b2 * b2;
+    mf_real num = MF_R(1.629) * b4 + MF_R(17.05) * b3 - MF_R(18.96) * b2 - MF_R(23.37) * b + MF_R(23.65);
+    mf_real den = b3 - MF_R(28.07) * b2 + MF_R(31.1) * b - MF_R(3.545);
+    if (!(den > MF_R(0.0))) return MF_R(1.0);
+    return mf_clamp(num / den, MF_R(0.0), MF_R(1.0));
+}
+
+/* Roughness of the convolution of micro- and meso-scale lobes (Tao Eq. 7),
+ * clamped to [0, 1]. */
+MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
+{
+    mf_real a = mf_clamp(alpha_micro, MF_R(0.0), MF_R(1.0)), m = mf_clamp(alpha_meso, MF_R(0.0), MF_R(1.0));
+    return mf_clamp(MF_R(0.07) * a * a + MF_R(0.94) * a + m - MF_R(0.83) * a * m, MF_R(0.0), MF_R(1.0));
+}
+
+/* ======================================================================== */
+/* == 11. Non-inline functions                                              */
 /* ======================================================================== */
 
 /* A short English name of a result code. */

@@ -150,6 +150,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_sampling);
     MFT_RUN(test_brdf);
     MFT_RUN(test_ltmd);
+    MFT_RUN(test_ltc);
     MFT_RUN(test_robust);
     MFT_RUN(test_float);
     MFT_RUN(test_tu2);

@@ -67,6 +67,7 @@ void test_robust(void);
 void test_float(void);
 void test_tu2(void);
 void test_ltmd(void);
+void test_ltc(void);
 
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;

@@ -50,6 +50,16 @@ int main(void)
         s += (mf_real)(mf_tension_from_triangles(tri, tri, uv, &T) == MF_SUCCESS) + mf_mat2_det(mf_mat2_transpose(T));
         s += (mf_real)mf_transform_valid(mf_mat2_inverse(T)) + mf_stretch_matrix(MF_R(0.2)).m00;
     }
+    {
+        const mf_real m9[9] = { MF_R(1.0), MF_R(0.0), MF_R(0.2), MF_R(0.0), MF_R(1.0), MF_R(0.0), MF_R(0.1), MF_R(0.0), MF_R(1.0) };
+        const mf_real m33[3][3] = { { MF_R(1.0), MF_R(0.0), MF_R(0.0) }, { MF_R(0.0), MF_R(1.0), MF_R(0.0) }, { MF_R(0.0), MF_R(0.0), MF_R(1.0) } };
+        mf_ltc l = mf_ltc_from_matrix9(m9), l2 = mf_ltc_from_matrix(m33), l3 = mf_ltc_from_inverse(MF_R(2.0), MF_R(0.1), MF_R(2.0), MF_R(0.1), MF_R(1.0));
+        mf_vec3 quad[4];
+        quad[0] = mf_vec3_make(-1, -1, 1); quad[1] = mf_vec3_make(-1, 1, 1); quad[2] = mf_vec3_make(1, 1, 1); quad[3] = mf_vec3_make(1, -1, 1);
+        s += mf_ltc_eval(&l, wo) + mf_ltc_sample(&l2, MF_R(0.3), MF_R(0.6)).z + mf_ltc_integrate(&l3, quad, 4, 1);
+        s += mf_polygon_irradiance(quad, 4, 0) + mf_sphere_form_factor(mf_polygon_vector_form_factor(quad, 4));
+        s += mf_ltc_meso_alpha(MF_R(0.9)) + mf_ltc_combined_alpha(MF_R(0.2), MF_R(0.3));
+    }
     mf_frame(wo, &t, &b);
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
     return s == s ? 0 : 1;
