@@ -1790,7 +1790,8 @@ static mf_real mf__nelder_mead(const mf__fit_ctx *c, mf_real *x, mf_real step, i
         for (i = 1; i < 4; ++i) { if (f[i] < f[lo]) lo = i; if (f[i] > f[hi]) hi = i; }
         nh = lo;
         for (i = 0; i < 4; ++i) if (i != hi && f[i] > f[nh]) nh = i;
-        if (MF_FABS(f[hi] - f[lo]) <= MF_R(1e-7) * (MF_FABS(f[lo]) + MF_R(1e-12))) break;
+        /* converged: relative spread 1e-7 (double) or 1.2e-5 (float) */
+        if (MF_FABS(f[hi] - f[lo]) <= mf_max(MF_R(1e-7), MF_R(100.0) * MF_EPS) * (MF_FABS(f[lo]) + MF_R(1e-12))) break;
         for (j = 0; j < 3; ++j) {
             cen[j] = MF_R(0.0);
             for (i = 0; i < 4; ++i) if (i != hi) cen[j] += s[i][j] / MF_R(3.0);
