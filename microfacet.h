@@ -78,7 +78,8 @@
  *
  *   0.1.0  first release: Beckmann, GGX, GTR, Student-t; Smith Lambda, G1, G2;
  *          NDF and VNDF sampling; specular BRDF; Fresnel; linearly transformed
- *          microsurfaces for every distribution.
+ *          microsurfaces for every distribution; Linearly Transformed Cosines
+ *          (polygon integration, fitter, tables, built-in GGX table).
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
@@ -1406,7 +1407,8 @@ MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
  * cosine form factor of the polygon transformed by M^-1 (Heitz 2017), clipped
  * exactly at the horizon. Polygons are given by their vertices relative to the
  * shading point (any length); the front face is the one whose vertices run
- * counterclockwise seen from the shading point. */
+ * counterclockwise seen from the shading point. The fitter, the tables and the
+ * built-in GGX table are non-inline (section 11, MICROFACET_IMPLEMENTATION). */
 
 typedef struct mf_ltc {
     mf_real M[9];       /* row-major */
