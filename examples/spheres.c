@@ -14,6 +14,7 @@
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
+#include "example_common.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -36,18 +37,6 @@ static const mf_real alphas[COLS] = { MF_R(0.05), MF_R(0.15), MF_R(0.3), MF_R(0.
 static const mf_real eta[3] = { MF_R(0.155), MF_R(0.117), MF_R(0.138) };
 static const mf_real kap[3] = { MF_R(4.83), MF_R(3.12), MF_R(2.15) };
 
-/* PCG32 (O'Neill), one stream per pixel; u in [0, 1) with 24 random bits. */
-typedef struct rng { uint64_t s; } rng;
-static uint32_t rng_next(rng *r)
-{
-    uint64_t old = r->s;
-    uint32_t x, rot;
-    r->s = old * 6364136223846793005ULL + 1442695040888963407ULL;
-    x = (uint32_t)(((old >> 18) ^ old) >> 27);
-    rot = (uint32_t)(old >> 59);
-    return (x >> rot) | (x << ((32u - rot) & 31u));
-}
-static mf_real rng_u(rng *r) { return (mf_real)(rng_next(r) >> 8) * MF_R(5.9604644775390625e-8); }
 
 static mf_ndf make_ndf(int row, mf_real a)
 {
@@ -73,14 +62,6 @@ static void sky(mf_vec3 d, mf_real out[3])
     } else {
         for (c = 0; c < 3; ++c) out[c] = gnd[c] * (MF_R(1.0) + MF_R(0.5) * d.y);
     }
-}
-
-static int finite3(const mf_real v[3])
-{
-    int c;
-    for (c = 0; c < 3; ++c)
-        if (!(MF_FABS(v[c]) < MF_BIG)) return 0;   /* false for NaN and Inf */
-    return 1;
 }
 
 /* Radiance seen along -z at cell-local position (x, y), |(x, y)| < 1 on the
@@ -114,15 +95,6 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
     for (c = 0; c < 3; ++c) out[c] += f * mf_fresnel_conductor(mf_dot(wi, wh), eta[c], kap[c]) * sk[c];
 }
 
-/* Little-endian float32 regardless of the host byte order. */
-static void put_f32(FILE *fp, float v)
-{
-    uint32_t u;
-    memcpy(&u, &v, 4);
-    fputc((int)(u & 255u), fp); fputc((int)((u >> 8) & 255u), fp);
-    fputc((int)((u >> 16) & 255u), fp); fputc((int)(u >> 24), fp);
-}
-
 int main(int argc, char **argv)
 {
     const char *ppm_path = argc > 1 ? argv[1] : "spheres.ppm";
@@ -131,7 +103,6 @@ int main(int argc, char **argv)
     float *img = (float *)malloc(sizeof(float) * 3 * W * H);
     long bad = 0;
     int px, py, s, c;
-    FILE *fp;
     if (!img) { fprintf(stderr, "out of memory\n"); return 1; }
 
     for (py = 0; py < H; ++py) {
@@ -142,8 +113,7 @@ int main(int argc, char **argv)
             int stride = SPP / sky_spp[row];
             mf_real sum[3] = { 0, 0, 0 }, v[3], sh1, sh2;
             rng r;
-            r.s = (uint64_t)(py * W + px) * 0x9E3779B97F4A7C15ULL + 1u;
-            rng_next(&r);
+            rng_seed(&r, (uint64_t)(py * W + px));
             sh1 = rng_u(&r); sh2 = rng_u(&r);   /* per-pixel shift of the sky point set */
             for (s = 0; s < SPP; ++s) {
                 /* sky sample j: u1 stratified, u2 golden-ratio sequence, both shifted */
@@ -162,24 +132,7 @@ int main(int argc, char **argv)
         }
     }
 
-    /* PPM: Reinhard c / (1 + c), then gamma 2.2 */
-    fp = fopen(ppm_path, "wb");
-    if (!fp) { perror(ppm_path); free(img); return 1; }
-    fprintf(fp, "P6\n%d %d\n255\n", W, H);
-    for (px = 0; px < 3 * W * H; ++px) {
-        mf_real v = (mf_real)img[px];
-        v = MF_POW(v / (MF_R(1.0) + v), MF_R(1.0) / MF_R(2.2));
-        fputc((int)(mf_clamp(v, MF_R(0.0), MF_R(1.0)) * MF_R(255.0) + MF_R(0.5)), fp);
-    }
-    fclose(fp);
-
-    /* PFM: linear RGB, rows bottom to top, negative scale = little-endian */
-    fp = fopen(pfm_path, "wb");
-    if (!fp) { perror(pfm_path); free(img); return 1; }
-    fprintf(fp, "PF\n%d %d\n-1.0\n", W, H);
-    for (py = H - 1; py >= 0; --py)
-        for (px = 0; px < 3 * W; ++px) put_f32(fp, img[3 * W * py + px]);
-    fclose(fp);
+    if (write_images(ppm_path, pfm_path, img, W, H)) { free(img); return 1; }
     free(img);
 
     printf("rows: %s, %s, %s, %s; columns: alpha = 0.05 0.15 0.3 0.5 0.8\n",

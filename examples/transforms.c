@@ -23,6 +23,7 @@
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
+#include "example_common.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -46,18 +47,6 @@ static const char *const panel_names[PANELS] = {
 static const mf_real eta[3] = { MF_R(0.155), MF_R(0.117), MF_R(0.138) };
 static const mf_real kap[3] = { MF_R(4.83), MF_R(3.12), MF_R(2.15) };
 
-/* PCG32 (O'Neill), one stream per pixel; u in [0, 1) with 24 random bits. */
-typedef struct rng { uint64_t s; } rng;
-static uint32_t rng_next(rng *r)
-{
-    uint64_t old = r->s;
-    uint32_t x, rot;
-    r->s = old * 6364136223846793005ULL + 1442695040888963407ULL;
-    x = (uint32_t)(((old >> 18) ^ old) >> 27);
-    rot = (uint32_t)(old >> 59);
-    return (x >> rot) | (x << ((32u - rot) & 31u));
-}
-static mf_real rng_u(rng *r) { return (mf_real)(rng_next(r) >> 8) * MF_R(5.9604644775390625e-8); }
 
 static mf_vec3 sub(mf_vec3 a, mf_vec3 b) { return mf_add(a, mf_scale(b, MF_R(-1.0))); }
 
@@ -120,23 +109,6 @@ static void shade(const mf_ndf *base, int p, mf_vec3 eye, mf_vec3 dir, mf_real o
     for (c = 0; c < 3; ++c) out[c] = f * mf_fresnel_conductor(mf_dot(wi, wh), eta[c], kap[c]);
 }
 
-static int finite3(const mf_real v[3])
-{
-    int c;
-    for (c = 0; c < 3; ++c)
-        if (!(MF_FABS(v[c]) < MF_BIG)) return 0;   /* false for NaN and Inf */
-    return 1;
-}
-
-/* Little-endian float32 regardless of the host byte order. */
-static void put_f32(FILE *fp, float v)
-{
-    uint32_t u;
-    memcpy(&u, &v, 4);
-    fputc((int)(u & 255u), fp); fputc((int)((u >> 8) & 255u), fp);
-    fputc((int)((u >> 16) & 255u), fp); fputc((int)(u >> 24), fp);
-}
-
 int main(int argc, char **argv)
 {
     const char *ppm_path = argc > 1 ? argv[1] : "transforms.ppm";
@@ -152,15 +124,13 @@ int main(int argc, char **argv)
     mf_real jac_err = MF_R(0.0);
     long bad = 0;
     int px, py, s, c;
-    FILE *fp;
     if (!img) { fprintf(stderr, "out of memory\n"); return 1; }
 
     for (py = 0; py < H; ++py) {
         for (px = 0; px < W; ++px) {
             mf_real sum[3] = { 0, 0, 0 }, v[3];
             rng r;
-            r.s = (uint64_t)(py * W + px) * 0x9E3779B97F4A7C15ULL + 1u;
-            rng_next(&r);
+            rng_seed(&r, (uint64_t)(py * W + px));
             for (s = 0; s < SPP; ++s) {
                 /* jittered position in the panel, in [-1, 1]^2, y up */
                 mf_real jx = MF_R(0.5) * ((mf_real)(s % 2) + rng_u(&r));
@@ -176,24 +146,7 @@ int main(int argc, char **argv)
         }
     }
 
-    /* PPM: Reinhard c / (1 + c), then gamma 2.2 */
-    fp = fopen(ppm_path, "wb");
-    if (!fp) { perror(ppm_path); free(img); return 1; }
-    fprintf(fp, "P6\n%d %d\n255\n", W, H);
-    for (px = 0; px < 3 * W * H; ++px) {
-        mf_real v = (mf_real)img[px];
-        v = MF_POW(v / (MF_R(1.0) + v), MF_R(1.0) / MF_R(2.2));
-        fputc((int)(mf_clamp(v, MF_R(0.0), MF_R(1.0)) * MF_R(255.0) + MF_R(0.5)), fp);
-    }
-    fclose(fp);
-
-    /* PFM: linear RGB, rows bottom to top, negative scale = little-endian */
-    fp = fopen(pfm_path, "wb");
-    if (!fp) { perror(pfm_path); free(img); return 1; }
-    fprintf(fp, "PF\n%d %d\n-1.0\n", W, H);
-    for (py = H - 1; py >= 0; --py)
-        for (px = 0; px < 3 * W; ++px) put_f32(fp, img[3 * W * py + px]);
-    fclose(fp);
+    if (write_images(ppm_path, pfm_path, img, W, H)) { free(img); return 1; }
     free(img);
 
     printf("panels, left to right: 1. %s, 2. %s, 3. %s, 4. %s\n",
