@@ -56,7 +56,7 @@
  *     [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] = [1.55, 1000]
  *     (the mean slope, hence Lambda, exists only for gamma > 1.5).
  *   - Lambda(w) is symmetric in w.z (it uses |w.z|); at w.z = 0 it is large
- *     but finite (w.z is clamped to 1e-15 inside the slope).
+ *     but finite (w.z^2 is clamped to 1e-30 inside the slope).
  *
  * CONFIGURATION MACROS (define before including)
  *
@@ -65,12 +65,13 @@
  *   MFDEF                   storage of non-inline functions (default extern)
  *   MF_MALLOC(n) / MF_FREE(p)  allocator pair (default malloc/free)
  *   MF_ASSERT(x)            internal assertions (default: nothing)
- *   MF_SQRT, MF_EXP, ...    every math call goes through a macro of this form
+ *   MF_SQRT, MF_EXP, ...    every math call goes through a macro of this form;
+ *                           define one to replace it (e.g. with an intrinsic)
  *
  * ERROR MODEL
  *
  *   Hot-path functions never allocate, log or abort; outside their domain they
- *   return 0. Builders (later modules) validate input and return an mf_result
+ *   return 0. Builders (LTC fitting and tables) validate input and return an mf_result
  *   (MF_SUCCESS = 0, negative codes for errors; mf_result_string() names them)
  *   and leave nothing allocated on failure. There is no global error state.
  *
@@ -98,40 +99,96 @@
 #ifdef MF_USE_DOUBLE
 typedef double mf_real;
 #define MF_R(x) (x)
+#ifndef MF_SQRT
 #define MF_SQRT(x) sqrt(x)
+#endif
+#ifndef MF_EXP
 #define MF_EXP(x) exp(x)
+#endif
+#ifndef MF_EXPM1
 #define MF_EXPM1(x) expm1(x)
+#endif
+#ifndef MF_LOG
 #define MF_LOG(x) log(x)
+#endif
+#ifndef MF_LOG1P
 #define MF_LOG1P(x) log1p(x)
+#endif
+#ifndef MF_POW
 #define MF_POW(x, y) pow(x, y)
+#endif
+#ifndef MF_SIN
 #define MF_SIN(x) sin(x)
+#endif
+#ifndef MF_COS
 #define MF_COS(x) cos(x)
+#endif
+#ifndef MF_ACOS
 #define MF_ACOS(x) acos(x)
+#endif
+#ifndef MF_ATAN2
 #define MF_ATAN2(y, x) atan2(y, x)
+#endif
+#ifndef MF_ERF
 #define MF_ERF(x) erf(x)
+#endif
+#ifndef MF_ERFC
 #define MF_ERFC(x) erfc(x)
+#endif
+#ifndef MF_LGAMMA
 #define MF_LGAMMA(x) lgamma(x)
+#endif
+#ifndef MF_FABS
 #define MF_FABS(x) fabs(x)
+#endif
 #define MF_EPS 2.220446049250313e-16
 #define MF_BIG 1e300
 #define MF_TINY 1e-300
 #else
 typedef float mf_real;
 #define MF_R(x) (x##f)
+#ifndef MF_SQRT
 #define MF_SQRT(x) sqrtf(x)
+#endif
+#ifndef MF_EXP
 #define MF_EXP(x) expf(x)
+#endif
+#ifndef MF_EXPM1
 #define MF_EXPM1(x) expm1f(x)
+#endif
+#ifndef MF_LOG
 #define MF_LOG(x) logf(x)
+#endif
+#ifndef MF_LOG1P
 #define MF_LOG1P(x) log1pf(x)
+#endif
+#ifndef MF_POW
 #define MF_POW(x, y) powf(x, y)
+#endif
+#ifndef MF_SIN
 #define MF_SIN(x) sinf(x)
+#endif
+#ifndef MF_COS
 #define MF_COS(x) cosf(x)
+#endif
+#ifndef MF_ACOS
 #define MF_ACOS(x) acosf(x)
+#endif
+#ifndef MF_ATAN2
 #define MF_ATAN2(y, x) atan2f(y, x)
+#endif
+#ifndef MF_ERF
 #define MF_ERF(x) erff(x)
+#endif
+#ifndef MF_ERFC
 #define MF_ERFC(x) erfcf(x)
+#endif
+#ifndef MF_LGAMMA
 #define MF_LGAMMA(x) lgammaf(x)
+#endif
+#ifndef MF_FABS
 #define MF_FABS(x) fabsf(x)
+#endif
 #define MF_EPS 1.1920929e-7f
 #define MF_BIG 1e30f
 #define MF_TINY 1e-37f
