@@ -132,7 +132,7 @@ int main(int argc, char **argv)
         }
     }
 
-    if (write_images(ppm_path, pfm_path, img, W, H)) { free(img); return 1; }
+    if (write_images(ppm_path, pfm_path, img, W, H, W)) { free(img); return 1; }
     free(img);
 
     printf("rows: %s, %s, %s, %s; columns: alpha = 0.05 0.15 0.3 0.5 0.8\n",

@@ -146,7 +146,7 @@ int main(int argc, char **argv)
         }
     }
 
-    if (write_images(ppm_path, pfm_path, img, W, H)) { free(img); return 1; }
+    if (write_images(ppm_path, pfm_path, img, W, H, W)) { free(img); return 1; }
     free(img);
 
     printf("panels, left to right: 1. %s, 2. %s, 3. %s, 4. %s\n",
