@@ -20,5 +20,13 @@ __global__ void mf_kernel(const float *u, float *out, int n)
     r += mf_D(d, wm) + mf_G1(d, wo, wm) + mf_G2_separable(d, wo, wi, wm) + mf_D_visible(d, wo, wm);
     r += mf_fresnel_conductor(wo.z, MF_R(0.2), MF_R(3.9)) + mf_fresnel_dielectric(wo.z, MF_R(1.5));
     r += mf_fresnel_schlick(MF_R(0.04), wo.z) + mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo);
+    {
+        mf_ltc l = mf_ltc_from_inverse(MF_R(2.0), MF_R(0.3), MF_R(2.5), MF_R(-0.2), MF_R(1.0));
+        mf_vec3 q[4];
+        q[0] = mf_vec3_make(-1, -1, 2); q[1] = mf_vec3_make(-1, 1, 2); q[2] = mf_vec3_make(1, 1, 2); q[3] = mf_vec3_make(1, -1, 2);
+        r += mf_ltc_integrate(&l, q, 4, 0) + mf_ltc_eval(&l, wo) + mf_ltc_sample(&l, (mf_real)u[i], MF_R(0.5)).z;
+        r += mf_polygon_irradiance(q, 4, 1) + mf_sphere_form_factor(mf_polygon_vector_form_factor(q, 4));
+        r += mf_ltc_combined_alpha(mf_ltc_meso_alpha(MF_R(0.9)), MF_R(0.2));
+    }
     out[i] = (float)r;
 }
