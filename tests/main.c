@@ -151,6 +151,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_brdf);
     MFT_RUN(test_ltmd);
     MFT_RUN(test_ltc);
+    MFT_RUN(test_leadr);
     MFT_RUN(test_robust);
     MFT_RUN(test_float);
     MFT_RUN(test_tu2);

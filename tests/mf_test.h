@@ -68,6 +68,7 @@ void test_float(void);
 void test_tu2(void);
 void test_ltmd(void);
 void test_ltc(void);
+void test_leadr(void);
 
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;

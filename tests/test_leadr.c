@@ -1,0 +1,149 @@
+/* LEADR slope moments and moment maps (Dupuy et al. 2013): linearity,
+ * deformation (Eq. 12) against deforming every slope sample, height scaling,
+ * roughness, mean normal (Eq. 11), the covariance guard; the mip pyramid of a
+ * periodic height map (every coarse texel the exact mean of its children,
+ * slopes against the analytic derivative), lookups (texel exactness, wrap,
+ * coarsest level = mean of all), and bad input. Tolerances 1e-12 relative in
+ * double (1e-5 in float) for identities; 5e-3 for the central-difference
+ * slopes of the test's sinusoids (truncation error k^2 h^2 / 6 times the
+ * amplitude, 4e-3 in sum for the highest frequency on 32 rows). */
+#include "mf_test.h"
+#include <stdlib.h>
+
+static int near_m(mf_leadr a, mf_leadr b, double tol)
+{
+    double s = 1.0 + fabs((double)b.E_xx) + fabs((double)b.E_yy);
+    return fabs((double)(a.E_x - b.E_x)) < tol * s && fabs((double)(a.E_y - b.E_y)) < tol * s &&
+           fabs((double)(a.E_xx - b.E_xx)) < tol * s && fabs((double)(a.E_yy - b.E_yy)) < tol * s &&
+           fabs((double)(a.E_xy - b.E_xy)) < tol * s;
+}
+
+static void test_moments(void)
+{
+    mft_rng r;
+    int i, k, bad = 0;
+    const double tol = MFT_TOL(1e-12, 1e-5);
+    mft_seed(&r, 8);
+    for (k = 0; k < 20; ++k) {
+        mf_mat2 J = mf_mat2_make((mf_real)(2 * mft_u01(&r) - 1), (mf_real)(2 * mft_u01(&r) - 1),
+                                 (mf_real)(2 * mft_u01(&r) - 1), (mf_real)(2 * mft_u01(&r) - 1));
+        mf_leadr sum = mf_leadr_scale(mf_leadr_from_slope(0, 0), 0), dsum = sum, hsum = sum, avg;
+        mf_real eta = (mf_real)(3 * mft_u01(&r));
+        for (i = 0; i < 16; ++i) {
+            mf_real su = (mf_real)(2 * mft_u01(&r) - 1), sv = (mf_real)(2 * mft_u01(&r) - 1);
+            /* x = du/dx su + dv/dx sv, y = du/dy su + dv/dy sv */
+            mf_real x = J.m00 * su + J.m10 * sv, y = J.m01 * su + J.m11 * sv;
+            sum = mf_leadr_add(sum, mf_leadr_from_slope(su, sv));
+            dsum = mf_leadr_add(dsum, mf_leadr_from_slope(x, y));
+            hsum = mf_leadr_add(hsum, mf_leadr_from_slope(eta * su, eta * sv));
+        }
+        avg = mf_leadr_scale(sum, MF_R(1.0) / 16);
+        if (!near_m(mf_leadr_deform(avg, J), mf_leadr_scale(dsum, MF_R(1.0) / 16), tol)) ++bad;
+        if (!near_m(mf_leadr_height_scale(avg, eta), mf_leadr_scale(hsum, MF_R(1.0) / 16), tol)) ++bad;
+        if (!near_m(mf_leadr_lerp(avg, sum, MF_R(0.25)), mf_leadr_add(mf_leadr_scale(avg, MF_R(0.75)), mf_leadr_scale(sum, MF_R(0.25))), tol)) ++bad;
+    }
+    MFT_CHECK(bad == 0, "moments: deformation (Eq. 12), height scaling and lerp act like the slope samples");
+    {
+        mf_leadr a = mf_leadr_from_slope(MF_R(0.3), MF_R(-0.2)), b = mf_leadr_with_roughness(a, MF_R(0.4), MF_R(0.1));
+        mf_real vx, vy, c;
+        mf_vec3 n = mf_leadr_mean_normal(a);
+        int ok = mf_leadr_covariance(b, &vx, &vy, &c);
+        MFT_NEAR(vx, 0.08, tol, tol, "roughness adds alpha_x^2 / 2");
+        MFT_NEAR(vy, 0.005, tol, tol, "roughness adds alpha_y^2 / 2");
+        MFT_CHECK(ok == 1 && fabs((double)c) < 1e-6, "valid covariance passes the guard");
+        MFT_NEAR(n.x, -0.3 / sqrt(1.13), tol, tol, "mean normal (Eq. 11) x");
+        MFT_NEAR(n.z, 1.0 / sqrt(1.13), tol, tol, "mean normal (Eq. 11) z");
+        ok = mf_leadr_covariance(a, &vx, &vy, &c);   /* a single slope: zero variance */
+        MFT_CHECK(ok == 0 && vx >= MF_LEADR_MIN_VARIANCE && vy >= MF_LEADR_MIN_VARIANCE && fabs((double)c) <= sqrt((double)vx * vy),
+                  "degenerate covariance guarded");
+        b.E_xy = 10;
+        ok = mf_leadr_covariance(b, &vx, &vy, &c);
+        MFT_CHECK(ok == 0 && fabs((double)c) <= 0.9991 * sqrt((double)vx * vy), "correlation clamped below 1");
+        b.E_xx = (mf_real)(HUGE_VAL - HUGE_VAL);
+        ok = mf_leadr_covariance(b, &vx, &vy, &c);
+        MFT_CHECK(ok == 0 && vx == MF_LEADR_MIN_VARIANCE, "NaN moments guarded");
+    }
+}
+
+static void test_maps(void)
+{
+    const int W = 64, H = 32;
+    mf_real *h = (mf_real *)malloc(sizeof(mf_real) * W * H), *nrm = (mf_real *)malloc(sizeof(mf_real) * 3 * W * H);
+    mf_leadr_map m;
+    int x, y, l, bad = 0;
+    double worst = 0;
+    const double pi = 3.14159265358979323846, tol = MFT_TOL(1e-12, 1e-5);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            double u = (x + 0.5) / W, v = (y + 0.5) / H;
+            h[y * W + x] = (mf_real)(0.01 * sin(2 * pi * u) + 0.005 * cos(4 * pi * v) + 0.002 * sin(2 * pi * (u + 3 * v)));
+        }
+    MFT_CHECK(mf_leadr_map_from_heights(&m, h, W, H, MF_R(0.1), MF_R(0.2)) == MF_SUCCESS, "moment map from heights");
+    MFT_CHECK(m.levels == 7 && mf_leadr_map_memory_bytes(&m) == sizeof(mf_leadr) * (64 * 32 + 32 * 16 + 16 * 8 + 8 * 4 + 4 * 2 + 2 + 1),
+              "pyramid levels and memory");
+    /* slopes against the analytic gradient (rows top to bottom, v down) */
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            double u = (x + 0.5) / W, v = (y + 0.5) / H;
+            double du = 0.02 * pi * cos(2 * pi * u) + 0.004 * pi * cos(2 * pi * (u + 3 * v));
+            double dv = -0.02 * pi * sin(4 * pi * v) + 0.012 * pi * cos(2 * pi * (u + 3 * v));
+            const mf_leadr *t = m.texels + y * W + x;
+            double e = fabs(t->E_x - du) + fabs(t->E_y - dv);
+            if (e > worst) worst = e;
+            if (fabs((double)t->E_xx - (double)t->E_x * t->E_x - 0.005) > 1e-6) ++bad;
+        }
+    MFT_CHECK(worst < 5e-3, "slopes of a periodic height map match the analytic gradient");
+    MFT_CHECK(bad == 0, "base roughness in every texel");
+    /* each coarse texel is the exact mean of its children */
+    bad = 0;
+    for (l = 1; l < m.levels; ++l) {
+        int w = W >> l > 0 ? W >> l : 1, hh = H >> l > 0 ? H >> l : 1, pw = W >> (l - 1) > 0 ? W >> (l - 1) : 1, ph = H >> (l - 1) > 0 ? H >> (l - 1) : 1;
+        int sx = pw > w ? 2 : 1, sy = ph > hh ? 2 : 1;
+        for (y = 0; y < hh; ++y)
+            for (x = 0; x < w; ++x) {
+                mf_leadr acc = mf_leadr_scale(mf_leadr_from_slope(0, 0), 0);
+                int a, b;
+                for (b = 0; b < sy; ++b)
+                    for (a = 0; a < sx; ++a) acc = mf_leadr_add(acc, m.texels[m.offset[l - 1] + (y * sy + b) * pw + x * sx + a]);
+                if (!near_m(m.texels[m.offset[l] + y * w + x], mf_leadr_scale(acc, MF_R(1.0) / (mf_real)(sx * sy)), tol)) ++bad;
+            }
+    }
+    MFT_CHECK(bad == 0, "every coarse mip texel is the mean of the finer ones");
+    /* lookups */
+    {
+        mf_leadr t0 = mf_leadr_map_lookup(&m, (mf_real)(5.5 / W), (mf_real)(7.5 / H), MF_R(1e-6));
+        mf_leadr tw = mf_leadr_map_lookup(&m, (mf_real)(5.5 / W + 1.0), (mf_real)(7.5 / H - 2.0), MF_R(1e-6));
+        mf_leadr top = mf_leadr_map_lookup(&m, MF_R(0.3), MF_R(0.8), MF_R(4.0));
+        MFT_CHECK(near_m(t0, m.texels[7 * W + 5], tol), "lookup at a texel center, finest level: the texel");
+        MFT_CHECK(near_m(tw, t0, MFT_TOL(1e-9, 1e-4)), "lookup wraps (the texture tiles)");
+        MFT_CHECK(near_m(top, m.texels[m.offset[m.levels - 1]], tol), "huge footprint: the mean of the whole map");
+        MFT_NEAR(top.E_x, 0.0, 0, 1e-6, "mean slope of a periodic height map is 0");
+    }
+    mf_leadr_map_release(&m);
+    MFT_CHECK(m.texels == NULL && m.levels == 0, "map released");
+    /* from normals: the same slopes */
+    for (x = 0; x < W * H; ++x) {
+        mf_vec3 n = mf_normalize(mf_vec3_make((mf_real)(0.1 * sin(x * 0.3)), (mf_real)(0.05 * cos(x * 0.7)), 1));
+        nrm[3 * x] = n.x; nrm[3 * x + 1] = n.y; nrm[3 * x + 2] = n.z;
+    }
+    MFT_CHECK(mf_leadr_map_from_normals(&m, nrm, W, H, 0, 0) == MF_SUCCESS &&
+              fabs((double)m.texels[10].E_x - (-nrm[30] / nrm[32])) < tol, "moment map from normals");
+    mf_leadr_map_release(&m);
+    /* bad input */
+    MFT_CHECK(mf_leadr_map_from_heights(&m, NULL, W, H, 0, 0) == MF_ERROR_INVALID_ARGUMENT && m.texels == NULL, "NULL heights");
+    MFT_CHECK(mf_leadr_map_from_heights(&m, h, 0, H, 0, 0) == MF_ERROR_INVALID_ARGUMENT && m.texels == NULL, "zero size");
+    MFT_CHECK(mf_leadr_map_from_heights(&m, h, 48, H, 0, 0) == MF_ERROR_INVALID_ARGUMENT && m.texels == NULL, "size not a power of two");
+    h[17] = (mf_real)(HUGE_VAL - HUGE_VAL);
+    MFT_CHECK(mf_leadr_map_from_heights(&m, h, W, H, 0, 0) == MF_ERROR_INVALID_DATA && m.texels == NULL, "NaN height");
+    nrm[5] = -1;
+    MFT_CHECK(mf_leadr_map_from_normals(&m, nrm, W, H, 0, 0) == MF_ERROR_INVALID_DATA && m.texels == NULL, "normal below the horizon");
+    MFT_CHECK(mf_leadr_map_from_heights(NULL, h, W, H, 0, 0) == MF_ERROR_INVALID_ARGUMENT, "NULL map");
+    free(h);
+    free(nrm);
+}
+
+void test_leadr(void)
+{
+    test_moments();
+    test_maps();
+}
