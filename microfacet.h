@@ -504,7 +504,8 @@ typedef enum mf_ndf_type {
     MF_NDF_BECKMANN = 0,
     MF_NDF_GGX = 1,
     MF_NDF_GTR = 2,
-    MF_NDF_STUDENT_T = 3
+    MF_NDF_STUDENT_T = 3,
+    MF_NDF_LEADR = 4      /* non-centered anisotropic Beckmann of LEADR moments (mf_leadr_ndf) */
 } mf_ndf_type;
 
 typedef struct mf_ndf {
@@ -529,6 +530,18 @@ typedef struct mf_ndf {
 #define MF__GTR_RK 10    /* kL / expm1(kL) */
 #define MF__GTR_RMK 11   /* -kL / expm1(-kL) */
 #define MF__VNDF_P 12    /* tail exponent of the numerical VNDF sampler (GTR, Student-t) */
+#define MF__LD_MX 0      /* LEADR: mean slope */
+#define MF__LD_MY 1
+#define MF__LD_VX 2      /* covariance */
+#define MF__LD_VY 3
+#define MF__LD_CXY 4
+#define MF__LD_IXX 5     /* inverse covariance */
+#define MF__LD_IYY 6
+#define MF__LD_IXY 7
+#define MF__LD_NORM 8    /* 1 / (2 pi sqrt(det)) (Eq. 8) */
+#define MF__LD_L00 9     /* Cholesky factor L L^T = covariance */
+#define MF__LD_L10 10
+#define MF__LD_L11 11
 
 MF_INLINE mf_real mf__clamp_alpha(mf_real a)
 {
@@ -697,6 +710,17 @@ MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
         return d->c[MF__GTR_NORM] / (MF_POW(den, d->gamma) * l2 * l2);
     }
     case MF_NDF_STUDENT_T: return mf__student_t_D(d, wm);
+    case MF_NDF_LEADR: {
+        /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
+        mf_real sx, sy, q, z2;
+        if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
+        sx = -wm.x / wm.z - d->c[MF__LD_MX];
+        sy = -wm.y / wm.z - d->c[MF__LD_MY];
+        q = d->c[MF__LD_IXX] * sx * sx + MF_R(2.0) * d->c[MF__LD_IXY] * sx * sy + d->c[MF__LD_IYY] * sy * sy;
+        if (!(q >= MF_R(0.0) && q < MF_R(160.0))) return MF_R(0.0);   /* q < 0: float overflow */
+        z2 = wm.z * wm.z;
+        return d->c[MF__LD_NORM] * MF_EXP(MF_R(-0.5) * q) / (z2 * z2);
+    }
     default: return MF_R(0.0);
     }
 }
@@ -966,9 +990,28 @@ MF_SLOW mf_real mf__student_t_lambda(const mf_ndf *d, mf_vec3 w)
     return mf__student_t_lambda_mu(d, MF_R(1.0) / MF_SQRT(a2t2));
 }
 
+/* LEADR Lambda (Eq. 13-15 and the supplement, Sec. 1.5): the exact Smith
+ * Lambda of the shifted Gaussian relative to the mesonormal's projected area,
+ * Lambda = exp(-nu^2) / (2 nu sqrt(pi)) - erfc(nu) / 2 with
+ * nu = (cot theta - mu(phi)) / (sigma(phi) sqrt 2); +infinity (MF_BIG) for
+ * nu <= 0, a direction below the mean surface. Not symmetric in w.z. */
+MF_SLOW mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w)
+{
+    mf_real sxy = MF_SQRT(w.x * w.x + w.y * w.y), cp, sp, mu, var, nu;
+    if (!(sxy > MF_R(0.0))) return w.z > MF_R(0.0) ? MF_R(0.0) : MF_BIG;
+    cp = w.x / sxy; sp = w.y / sxy;
+    mu = cp * d->c[MF__LD_MX] + sp * d->c[MF__LD_MY];
+    var = cp * cp * d->c[MF__LD_VX] + sp * sp * d->c[MF__LD_VY] + MF_R(2.0) * cp * sp * d->c[MF__LD_CXY];
+    nu = (w.z / sxy - mu) / MF_SQRT(MF_R(2.0) * mf_max(var, MF_R(1e-30)));
+    if (!(nu > MF_R(0.0))) return MF_BIG;
+    if (nu > MF_R(30.0)) return MF_R(0.0);
+    return mf_min(mf_max(MF_R(0.5) * (MF_EXP(-nu * nu) / (nu * MF_SQRT_PI) - MF_ERFC(nu)), MF_R(0.0)), MF_BIG);
+}
+
 MF_SLOW mf_real mf__lambda_other(const mf_ndf *d, mf_vec3 w)
 {
     switch (d->type) {
+    case MF_NDF_LEADR: return mf__leadr_lambda(d, w);
     case MF_NDF_BECKMANN: return mf_beckmann_lambda(d->ax, d->ay, w);
     case MF_NDF_GTR: return mf__gtr_lambda(d, w);
     case MF_NDF_STUDENT_T: return mf__student_t_lambda(d, w);
@@ -1009,11 +1052,30 @@ MF_INLINE mf_real mf_G2_separable(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_ve
     return mf_G1(d, wo, wm) * mf_G1(d, wi, wm);
 }
 
+/* w . (-E_x, -E_y, 1): the projected area of the mean surface (unnormalized
+ * mesonormal) toward w; w.z for every centered distribution. The mean slope of
+ * a transformed distribution is M^-T times the base's (Eq. 4.16). */
+MF_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
+{
+    mf_real mx, my;
+    if (d->type != MF_NDF_LEADR) return w.z;
+    mx = d->c[MF__LD_MX]; my = d->c[MF__LD_MY];
+    if (d->transformed) {
+        mf_real tx = d->Minv.m00 * mx + d->Minv.m10 * my, ty = d->Minv.m01 * mx + d->Minv.m11 * my;
+        mx = tx; my = ty;
+    }
+    return w.z - mx * w.x - my * w.y;
+}
+
 /* Projected area of the visible microsurface, w.z (1 + Lambda(w)) =
- * integral <w.m> D(m) dm (thesis Eq. 3.9); finite and positive at w.z = 0. */
+ * integral <w.m> D(m) dm (thesis Eq. 3.9); finite and positive at w.z = 0.
+ * For LEADR moments the mean surface is tilted: (w . (-E_x, -E_y, 1)) (1 +
+ * Lambda(w)) (LEADR supplement Eq. 9). */
 MF_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
 {
-    mf_real cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
+    mf_real cz;
+    if (d->type == MF_NDF_LEADR) return mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w));
+    cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
     return cz + cz * mf_lambda(d, w);
 }
 
@@ -1356,14 +1418,44 @@ MF_INLINE mf_vec3 mf__sample_D_base(const mf_ndf *d, mf_real u1, mf_real u2)
     case MF_NDF_GGX: r2 = q > MF_R(0.0) ? t / q : MF_BIG; break;
     case MF_NDF_GTR: r2 = mf__iso_tan2(d, t, q); return mf__wm_from_slope(MF_R(1.0), MF_R(1.0), r2, cp, sp);
     case MF_NDF_STUDENT_T: r2 = mf__iso_tan2(d, t, q); break;
+    case MF_NDF_LEADR: {   /* slope = mean + L n, n two standard normals */
+        mf_real n1 = MF_R(1.4142135623730951) * mf_erfinv(MF_R(2.0) * t - MF_R(1.0));
+        mf_real n2 = MF_R(1.4142135623730951) * mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
+        mf_real sx = d->c[MF__LD_MX] + d->c[MF__LD_L00] * n1;
+        mf_real sy = d->c[MF__LD_MY] + d->c[MF__LD_L10] * n1 + d->c[MF__LD_L11] * n2;
+        return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
+    }
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     }
     return mf__wm_from_slope(d->ax, d->ay, r2, cp, sp);
 }
 
+/* LEADR visible normals: with slopes s = mean + L z (z standard normal), the
+ * visibility weight max(0, w.z - s . w.xy) is a half-plane in z along
+ * n = L^T w.xy, so z along n has the Beckmann-like visible density
+ * max(0, c - z1) N(z1) (the inversion of mf__beckmann_visible_slopes) and z
+ * across n stays standard normal. */
+MF_INLINE mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_real l00 = d->c[MF__LD_L00], l10 = d->c[MF__LD_L10], l11 = d->c[MF__LD_L11];
+    mf_real nx = l00 * w.x + l10 * w.y, ny = l11 * w.y, k = MF_SQRT(nx * nx + ny * ny);
+    mf_real cnum = w.z - d->c[MF__LD_MX] * w.x - d->c[MF__LD_MY] * w.y, x, y, ex = MF_R(1.0), ey = MF_R(0.0), z1, z2, sx, sy;
+    if (w.z < MF_R(0.0) || !(cnum > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (k > MF_R(1e-30) * cnum) { ex = nx / k; ey = ny / k; }
+    /* unit-Beckmann units (exp(-x^2)): z = sqrt(2) x, bound c = cnum / k */
+    mf__beckmann_visible_slopes(k > MF_R(1e-30) * cnum ? MF_R(1.4142135623730951) * k / cnum : MF_R(0.0), u1, u2, &x, &y);
+    z1 = MF_R(1.4142135623730951) * x; z2 = MF_R(1.4142135623730951) * y;
+    /* z = z1 e + z2 e_perp, s = mean + L z */
+    x = z1 * ex - z2 * ey; y = z1 * ey + z2 * ex;
+    sx = d->c[MF__LD_MX] + l00 * x;
+    sy = d->c[MF__LD_MY] + l10 * x + l11 * y;
+    return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
+}
+
 MF_SLOW mf_vec3 mf__sample_visible_other(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     switch (d->type) {
+    case MF_NDF_LEADR: return mf__leadr_sample_visible(d, w, u1, u2);
     case MF_NDF_BECKMANN: return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
     case MF_NDF_GTR:
     case MF_NDF_STUDENT_T: {
@@ -1410,7 +1502,10 @@ MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_r
 /* ======================================================================== */
 /* f(wo, wi) = D(wh) G2(wo, wi, wh) / (4 |wo.z| |wi.z|) (Walter et al. 2007
  * Eq. 20 without Fresnel), sampled through the visible normals of wo
- * (Heitz & d'Eon 2014): pdf(wi) = D_wo(wh) / (4 wo.wh). Reflection only. */
+ * (Heitz & d'Eon 2014): pdf(wi) = D_wo(wh) / (4 wo.wh). Reflection only.
+ * For LEADR moments wo.z is replaced by the mean surface's projected area
+ * wo . (-E_x, -E_y, 1) (LEADR Eq. 16-17), which keeps the energy but is not
+ * reciprocal when the mean slope is not 0. */
 
 MF_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
@@ -1420,7 +1515,7 @@ MF_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     if (!(wh.z > MF_R(0.0))) return MF_R(0.0);
     /* f grows like 1/cos at grazing retro-reflection: divide in two steps and
      * cap, so float never overflows */
-    return mf_min(mf_D(d, wh) * mf_G2(d, wo, wi, wh) / (MF_R(4.0) * wo.z) / wi.z, MF_BIG);
+    return mf_min(mf_D(d, wh) * mf_G2(d, wo, wi, wh) / (MF_R(4.0) * mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-30))) / wi.z, MF_BIG);
 }
 
 /* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. */
@@ -1533,6 +1628,40 @@ MF_INLINE mf_vec3 mf_leadr_mean_normal(mf_leadr a)
     mf_vec3 n = mf_normalize(mf_vec3_make(-a.E_x, -a.E_y, MF_R(1.0)));
     return n.z > MF_R(0.0) ? n : mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
 }
+/* forward declaration: defined below */
+MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy);
+
+/* The non-centered anisotropic Beckmann distribution of the moments (Eq. 8,
+ * 10) as an mf_ndf: every generic operation works (D, Lambda of Eq. 13-15
+ * exact, G1, G2, D_visible, both samplers exact, the BRDF of Eq. 16-17). The
+ * covariance goes through mf_leadr_covariance's guard. */
+MF_INLINE mf_ndf mf_leadr_ndf(mf_leadr a)
+{
+    mf_real vx, vy, c, det, l00, l10;
+    mf_ndf d;
+    mf_leadr_covariance(a, &vx, &vy, &c);
+    d = mf__ndf_init(MF_NDF_LEADR, MF_SQRT(MF_R(2.0) * vx), MF_SQRT(MF_R(2.0) * vy), MF_R(0.0));
+    d.c[MF__LD_MX] = a.E_x == a.E_x && MF_FABS(a.E_x) < MF_BIG ? a.E_x : MF_R(0.0);
+    d.c[MF__LD_MY] = a.E_y == a.E_y && MF_FABS(a.E_y) < MF_BIG ? a.E_y : MF_R(0.0);
+    d.c[MF__LD_VX] = vx; d.c[MF__LD_VY] = vy; d.c[MF__LD_CXY] = c;
+    det = vx * vy - c * c;
+    d.c[MF__LD_IXX] = vy / det; d.c[MF__LD_IYY] = vx / det; d.c[MF__LD_IXY] = -c / det;
+    d.c[MF__LD_NORM] = MF_R(1.0) / (MF_R(2.0) * MF_PI * MF_SQRT(det));
+    l00 = MF_SQRT(vx); l10 = c / l00;
+    d.c[MF__LD_L00] = l00; d.c[MF__LD_L10] = l10;
+    d.c[MF__LD_L11] = MF_SQRT(mf_max(vy - l10 * l10, MF_R(1e-30)));
+    return d;
+}
+
+/* Eq. 17 with L = F = 1: the radiance reflected toward wo from a directional
+ * light along wi, (w_nbar . w_g)/(w_nbar . wo) D(wh) / (4 (1 + Lambda(wo) +
+ * Lambda(wi))) (supplement Sec. 3.3); = mf_brdf(mf_leadr_ndf(a)) wi.z. */
+MF_INLINE mf_real mf_leadr_specular(mf_leadr a, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_ndf d = mf_leadr_ndf(a);
+    return mf_brdf(&d, wo, wi) * mf_max(wi.z, MF_R(0.0));
+}
+
 /* Covariance (Eq. 9) with its validity guard: variances at least
  * MF_LEADR_MIN_VARIANCE and |correlation| at most MF_LEADR_MAX_CORRELATION
  * (filtering and float round-off can break both). Returns 1 if the moments

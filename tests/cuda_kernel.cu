@@ -28,5 +28,10 @@ __global__ void mf_kernel(const float *u, float *out, int n)
         r += mf_polygon_irradiance(q, 4, 1) + mf_sphere_form_factor(mf_polygon_vector_form_factor(q, 4));
         r += mf_ltc_combined_alpha(mf_ltc_meso_alpha(MF_R(0.9)), MF_R(0.2));
     }
+    {
+        mf_leadr la = mf_leadr_with_roughness(mf_leadr_from_slope((mf_real)u[i], MF_R(0.1)), MF_R(0.2), MF_R(0.2));
+        mf_ndf ld = mf_leadr_ndf(la);
+        r += mf_leadr_specular(la, wo, wi) + mf_sample_visible(&ld, wo, MF_R(0.3), MF_R(0.4)).z + mf_lambda(&ld, wo);
+    }
     out[i] = (float)r;
 }

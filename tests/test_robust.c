@@ -33,13 +33,17 @@ void test_robust(void)
     dirs[9] = mft_dir(2.0, 0.5);
     dirs[10] = mft_dir(1.5707964, 0.3);           /* just below */
     dirs[11] = mft_dir(0.05, 4.0);
-    for (kind = 0; kind < 4; ++kind) {
+    for (kind = 0; kind < 5; ++kind) {
         int bad_eval = 0, bad_smith = 0, bad_sample = 0, bad_brdf = 0;
         for (ia = 0; ia < 11; ++ia)
             for (ig = 0; ig < (kind >= 2 ? 13 : 1); ++ig) {
                 mf_real a = (mf_real)alphas[ia], b = (mf_real)alphas[(ia + 3) % 11], g = (mf_real)gammas[ig];
-                mf_ndf d = kind == 0 ? mf_beckmann(a, b) : kind == 1 ? mf_ggx(a, b) : kind == 2 ? mf_gtr(a, g) : mf_student_t(a, b, g);
-                mf_ndf d0 = kind == 0 ? mf_beckmann(a, 0) : kind == 1 ? mf_ggx(0, a) : kind == 2 ? mf_gtr(0, g) : mf_student_t(a, 0, g);
+                mf_leadr lm = mf_leadr_with_roughness(mf_leadr_from_slope(a, -b), a, b), l0 = mf_leadr_from_slope(a, b);
+                mf_ndf d = kind == 0 ? mf_beckmann(a, b) : kind == 1 ? mf_ggx(a, b) : kind == 2 ? mf_gtr(a, g)
+                         : kind == 3 ? mf_student_t(a, b, g) : mf_leadr_ndf(lm);
+                mf_ndf d0 = kind == 0 ? mf_beckmann(a, 0) : kind == 1 ? mf_ggx(0, a) : kind == 2 ? mf_gtr(0, g)
+                          : kind == 3 ? mf_student_t(a, 0, g) : mf_leadr_ndf(l0);
+                if (kind == 4 && ig > 0) break;
                 for (l = 0; l < 2; ++l) {
                     const mf_ndf *dd = l ? &d0 : &d;
                     for (i = 0; i < 12; ++i) {

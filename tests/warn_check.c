@@ -60,6 +60,16 @@ int main(void)
         s += mf_polygon_irradiance(quad, 4, 0) + mf_sphere_form_factor(mf_polygon_vector_form_factor(quad, 4));
         s += mf_ltc_meso_alpha(MF_R(0.9)) + mf_ltc_combined_alpha(MF_R(0.2), MF_R(0.3));
     }
+    {
+        mf_leadr la = mf_leadr_with_roughness(mf_leadr_add(mf_leadr_from_slope(MF_R(0.1), MF_R(0.2)), mf_leadr_from_normal(wo)), MF_R(0.2), MF_R(0.3));
+        mf_ndf ld;
+        mf_real vx, vy, cxy;
+        la = mf_leadr_lerp(mf_leadr_height_scale(mf_leadr_deform(la, mf_mat2_make(1, 0, 0, 1)), MF_R(0.5)), la, MF_R(0.5));
+        la = mf_leadr_scale(la, MF_R(1.0));
+        ld = mf_leadr_ndf(la);
+        s += mf_leadr_specular(la, wo, wi) + mf_D(&ld, wo) + mf_leadr_mean_normal(la).z + (mf_real)mf_leadr_covariance(la, &vx, &vy, &cxy);
+        s += mf_leadr_map_lookup((const mf_leadr_map *)0, MF_R(0.5), MF_R(0.5), MF_R(0.1)).E_x;
+    }
     mf_frame(wo, &t, &b);
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
     return s == s ? 0 : 1;
