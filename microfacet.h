@@ -1662,6 +1662,90 @@ MF_INLINE mf_real mf_leadr_specular(mf_leadr a, mf_vec3 wo, mf_vec3 wi)
     return mf_brdf(&d, wo, wi) * mf_max(wi.z, MF_R(0.0));
 }
 
+/* The slope sample grid of Sec. 5.1: n x n points p_j uniform in [-l, l]
+ * with Gaussian weights, warped by the Cholesky factor of the covariance
+ * and shifted by the mean. l = 0.45 (n - 1) (the paper's 1.8 at n = 5),
+ * at most 4.5; the sums converge to the integrals as n grows (test_leadr). */
+#define MF_LEADR_GRID_MAX 33
+MF_INLINE mf_real mf__leadr_grid_l(int n) { return mf_min(MF_R(0.45) * (mf_real)(n - 1), MF_R(4.5)); }
+
+typedef mf_vec3 (*mf_env_fn)(mf_vec3 wi, mf_real solid_angle, void *ctx);
+
+/* Sum over the grid of g(wn) <wn, wo> / (wn . wg) W, where g is the
+ * lighting term of the shading mode (0: environment specular, Eq. 22;
+ * 1: diffuse under one directional light, Eq. 20-21), divided by the mean
+ * surface's projected area wo . (-E_x, -E_y, 1). */
+MF_INLINE mf_vec3 mf__leadr_grid(mf_leadr a, mf_vec3 wo, int n, int mode, mf_vec3 wl, int shadowing,
+                                 mf_env_fn env, void *ctx)
+{
+    mf_ndf d = mf_leadr_ndf(a);
+    mf_real lam_o, lim, w1[MF_LEADR_GRID_MAX], p1[MF_LEADR_GRID_MAX], wsum = MF_R(0.0), proj, area, r;
+    mf_vec3 acc = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    int j, k;
+    n = n < 1 ? 1 : (n > MF_LEADR_GRID_MAX ? MF_LEADR_GRID_MAX : n);
+    proj = mf__mean_surface_proj(&d, wo);
+    if (!(wo.z > MF_R(0.0)) || !(proj > MF_R(0.0))) return acc;
+    lim = mf__leadr_grid_l(n);
+    for (j = 0; j < n; ++j) {
+        p1[j] = n > 1 ? -lim + MF_R(2.0) * lim * (mf_real)j / (mf_real)(n - 1) : MF_R(0.0);
+        w1[j] = MF_EXP(MF_R(-0.5) * p1[j] * p1[j]);
+        wsum += w1[j];
+    }
+    lam_o = mf_lambda(&d, wo);
+    r = d.c[MF__LD_CXY] / (d.c[MF__LD_L00] * MF_SQRT(d.c[MF__LD_VY]));
+    /* slope-space area of one sample, overestimated along the longest axis */
+    area = MF_R(2.0) * (n > 1 ? lim : MF_R(1.0)) * MF_SQRT(mf_max(d.c[MF__LD_VX], d.c[MF__LD_VY])) / (mf_real)n;
+    area *= area;
+    for (j = 0; j < n; ++j)
+        for (k = 0; k < n; ++k) {
+            mf_real sx = p1[j] * d.c[MF__LD_L00] + d.c[MF__LD_MX];
+            mf_real sy = (r * p1[j] + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * p1[k]) * MF_SQRT(d.c[MF__LD_VY]) + d.c[MF__LD_MY];
+            mf_real W = w1[j] * w1[k] / (wsum * wsum), on, g;
+            mf_vec3 wn = mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0))), wi;
+            on = mf_dot(wn, wo);
+            if (!(on > MF_R(0.0))) continue;
+            if (mode == 0) {
+                mf_vec3 L;
+                mf_real sa;
+                wi = mf_reflect(wo, wn);
+                if (!(wi.z > MF_R(0.0))) continue;
+                /* solid angle of the sample: |d wi / d slope| A = 4 (wo.wn) cos^3 A */
+                sa = MF_R(4.0) * on * wn.z * wn.z * wn.z * area;
+                L = env ? env(wi, sa, ctx) : mf_vec3_make(MF_R(1.0), MF_R(1.0), MF_R(1.0));
+                g = MF_R(1.0) / (MF_R(1.0) + lam_o + (shadowing ? mf_lambda(&d, wi) : MF_R(0.0)));
+                acc = mf_add(acc, mf_scale(L, g * on / wn.z * W));
+            } else {
+                mf_real ni = mf_dot(wn, wl);
+                if (!(ni > MF_R(0.0))) continue;
+                g = ni / (MF_R(1.0) + lam_o + (shadowing ? mf_lambda(&d, wl) : MF_R(0.0)));
+                acc = mf_add(acc, mf_scale(mf_vec3_make(MF_R(1.0), MF_R(1.0), MF_R(1.0)), g * on / wn.z * W * MF_INV_PI));
+            }
+        }
+    return mf_scale(acc, MF_R(1.0) / proj);
+}
+
+/* Specular microfacets under environment lighting (Eq. 19, 22; Algorithm 1):
+ * env(wi, solid_angle, ctx) returns the prefiltered radiance for a direction
+ * and the solid angle one sample covers (for the LOD of a prefiltered map).
+ * n x n slope samples (5 is the paper's default); no Fresnel (F = 1);
+ * self_shadowing = 0 drops Lambda(wi) (supplement Sec. 1.5). */
+MF_INLINE mf_vec3 mf_leadr_specular_env(mf_leadr a, mf_vec3 wo, int n, int self_shadowing, mf_env_fn env, void *ctx)
+{
+    return mf__leadr_grid(a, wo, n, 0, wo, self_shadowing, env, ctx);
+}
+
+/* Diffuse microfacets (albedo 1) under one directional light along wi of
+ * radiance 1 (Eq. 20-21, Algorithm 2), n x n slope samples (5 by default). */
+MF_INLINE mf_real mf_leadr_diffuse(mf_leadr a, mf_vec3 wo, mf_vec3 wi, int grid_n)
+{
+    return mf__leadr_grid(a, wo, grid_n > 0 ? grid_n : 5, 1, wi, 1, (mf_env_fn)0, (void *)0).x;
+}
+/* The same without self-shadowing (1 / (1 + Lambda(wo)), supplement Sec. 1.5). */
+MF_INLINE mf_real mf_leadr_diffuse_noshadow(mf_leadr a, mf_vec3 wo, mf_vec3 wi, int grid_n)
+{
+    return mf__leadr_grid(a, wo, grid_n > 0 ? grid_n : 5, 1, wi, 0, (mf_env_fn)0, (void *)0).x;
+}
+
 /* Covariance (Eq. 9) with its validity guard: variances at least
  * MF_LEADR_MIN_VARIANCE and |correlation| at most MF_LEADR_MAX_CORRELATION
  * (filtering and float round-off can break both). Returns 1 if the moments

@@ -196,9 +196,73 @@ static void test_ndf_kind(void)
     }
 }
 
+static mf_vec3 env_smooth(mf_vec3 wi, mf_real solid_angle, void *ctx)
+{
+    mf_real v = MF_R(1.0) + MF_R(0.5) * wi.x + wi.z;
+    (void)solid_angle; (void)ctx;
+    return mf_vec3_make(v, v, v);
+}
+
+/* dense reference of the grid sums: tensor Gauss-Legendre over slopes within
+ * 7 standard deviations of the mean */
+static double dense(mf_leadr a, mf_vec3 wo, int mode, mf_vec3 wl)
+{
+    mf_ndf d = mf_leadr_ndf(a);
+    double gx[8], gw[8], sum = 0, sx = sqrt((double)d.c[MF__LD_VX]), sy = sqrt((double)d.c[MF__LD_VY]);
+    double lo = mf_lambda(&d, wo), proj = (double)wo.z - a.E_x * wo.x - a.E_y * wo.y;
+    int i, j, pi, pj;
+    const int P = 60;
+    mft_gl(8, gx, gw);
+    for (pi = 0; pi < P; ++pi)
+        for (i = 0; i < 8; ++i)
+            for (pj = 0; pj < P; ++pj)
+                for (j = 0; j < 8; ++j) {
+                    double x = a.E_x + sx * (-7 + 14.0 * (pi + gx[i]) / P), y = a.E_y + sy * (-7 + 14.0 * (pj + gx[j]) / P);
+                    double w = gw[i] * gw[j] * (14.0 * sx / P) * (14.0 * sy / P), n = sqrt(1 + x * x + y * y), on, c2;
+                    mf_vec3 wn = mf_vec3_make((mf_real)(-x / n), (mf_real)(-y / n), (mf_real)(1 / n)), wi;
+                    on = mf_dot(wn, wo);
+                    if (on <= 0) continue;
+                    c2 = 1.0 / (n * n);
+                    w *= (double)mf_D(&d, wn) * c2 * c2;   /* P22 */
+                    if (mode == 0) {
+                        wi = mf_reflect(wo, wn);
+                        if (wi.z <= 0) continue;
+                        sum += w * (double)env_smooth(wi, 0, NULL).x * on / wn.z / (1 + lo + mf_lambda(&d, wi));
+                    } else {
+                        double ni = mf_dot(wn, wl);
+                        if (ni <= 0) continue;
+                        sum += w * ni / (1 + lo + mf_lambda(&d, wl)) * on / wn.z / 3.14159265358979323846;
+                    }
+                }
+    return sum / proj;
+}
+
+static void test_grid_shading(void)
+{
+    mf_leadr a = moments(0.15, -0.1, 0.04, 0.09, 0.5);
+    mf_vec3 wo = mft_dir(0.6, 0.4), wl = mft_dir(0.9, 2.5);
+    double rd = dense(a, wo, 1, wl), re = dense(a, wo, 0, wl), ed[4], ee[4];
+    const int ns[4] = { 5, 9, 17, 33 };
+    char msg[200];
+    int k;
+    for (k = 0; k < 4; ++k) {
+        ed[k] = fabs(mf_leadr_diffuse(a, wo, wl, ns[k]) / rd - 1);
+        ee[k] = fabs(mf_leadr_specular_env(a, wo, ns[k], 1, env_smooth, NULL).x / re - 1);
+    }
+    printf("    LEADR grids vs dense integrals, N = 5, 9, 17, 33: diffuse %.2g %.2g %.2g %.2g; environment %.2g %.2g %.2g %.2g\n",
+           ed[0], ed[1], ed[2], ed[3], ee[0], ee[1], ee[2], ee[3]);
+    snprintf(msg, sizeof msg, "LEADR diffuse grid converges (N=33 error %.2g, N=5 %.2g)", ed[3], ed[0]);
+    MFT_CHECK(ed[3] < 2e-3 && ed[3] < ed[0], msg);
+    snprintf(msg, sizeof msg, "LEADR environment grid converges (N=33 error %.2g, N=5 %.2g)", ee[3], ee[0]);
+    MFT_CHECK(ee[3] < 2e-3 && ee[3] < ee[0], msg);
+    MFT_CHECK(mf_leadr_diffuse_noshadow(a, wo, wl, 5) >= mf_leadr_diffuse(a, wo, wl, 5), "without shadowing is brighter");
+    MFT_CHECK(mf_leadr_diffuse(a, mft_dir(2.0, 0), wl, 5) == 0, "wo below the horizon: 0");
+}
+
 void test_leadr(void)
 {
     test_moments();
     test_maps();
     test_ndf_kind();
+    test_grid_shading();
 }
