@@ -1692,6 +1692,7 @@ MF_INLINE mf_vec3 mf__leadr_grid(mf_leadr a, mf_vec3 wo, int n, int mode, mf_vec
         wsum += w1[j];
     }
     lam_o = mf_lambda(&d, wo);
+    if (mode == 1 && shadowing) lam_o += mf_lambda(&d, wl);   /* the light is fixed: once */
     r = d.c[MF__LD_CXY] / (d.c[MF__LD_L00] * MF_SQRT(d.c[MF__LD_VY]));
     /* slope-space area of one sample, overestimated along the longest axis */
     area = MF_R(2.0) * (n > 1 ? lim : MF_R(1.0)) * MF_SQRT(mf_max(d.c[MF__LD_VX], d.c[MF__LD_VY])) / (mf_real)n;
@@ -1717,7 +1718,7 @@ MF_INLINE mf_vec3 mf__leadr_grid(mf_leadr a, mf_vec3 wo, int n, int mode, mf_vec
             } else {
                 mf_real ni = mf_dot(wn, wl);
                 if (!(ni > MF_R(0.0))) continue;
-                g = ni / (MF_R(1.0) + lam_o + (shadowing ? mf_lambda(&d, wl) : MF_R(0.0)));
+                g = ni / (MF_R(1.0) + lam_o);
                 acc = mf_add(acc, mf_scale(mf_vec3_make(MF_R(1.0), MF_R(1.0), MF_R(1.0)), g * on / wn.z * W * MF_INV_PI));
             }
         }
@@ -1744,6 +1745,66 @@ MF_INLINE mf_real mf_leadr_diffuse(mf_leadr a, mf_vec3 wo, mf_vec3 wi, int grid_
 MF_INLINE mf_real mf_leadr_diffuse_noshadow(mf_leadr a, mf_vec3 wo, mf_vec3 wi, int grid_n)
 {
     return mf__leadr_grid(a, wo, grid_n > 0 ? grid_n : 5, 1, wi, 0, (mf_env_fn)0, (void *)0).x;
+}
+
+/* Second-order spherical harmonics of a radiance environment (Ramamoorthi &
+ * Hanrahan 2001; LEADR Algorithm 2), coefficients ordered L00, L1-1, L10,
+ * L11, L2-2, L2-1, L20, L21, L22. Adds a directional light of radiance L. */
+MF_INLINE void mf_sh9_add_directional(mf_real sh[9], mf_vec3 dir, mf_real L)
+{
+    mf_real x = dir.x, y = dir.y, z = dir.z;
+    sh[0] += MF_R(0.282095) * L;
+    sh[1] += MF_R(0.488603) * y * L; sh[2] += MF_R(0.488603) * z * L; sh[3] += MF_R(0.488603) * x * L;
+    sh[4] += MF_R(1.092548) * x * y * L; sh[5] += MF_R(1.092548) * y * z * L;
+    sh[6] += MF_R(0.315392) * (MF_R(3.0) * z * z - MF_R(1.0)) * L;
+    sh[7] += MF_R(1.092548) * x * z * L; sh[8] += MF_R(0.546274) * (x * x - y * y) * L;
+}
+/* Irradiance E(n) of the SH9 environment (Ramamoorthi & Hanrahan Eq. 13). */
+MF_INLINE mf_real mf_sh9_irradiance(const mf_real sh[9], mf_vec3 n)
+{
+    const mf_real c1 = MF_R(0.429043), c2 = MF_R(0.511664), c3 = MF_R(0.743125), c4 = MF_R(0.886227), c5 = MF_R(0.247708);
+    mf_real x = n.x, y = n.y, z = n.z;
+    return c1 * sh[8] * (x * x - y * y) + c3 * sh[6] * z * z + c4 * sh[0] - c5 * sh[6] +
+           MF_R(2.0) * c1 * (sh[4] * x * y + sh[7] * x * z + sh[5] * y * z) +
+           MF_R(2.0) * c2 * (sh[3] * x + sh[1] * y + sh[2] * z);
+}
+
+/* Diffuse microfacets (albedo 1) under an SH9 environment, without
+ * self-shadowing (supplement, Simplified Algorithm 3): the ratio
+ * sum E(wn) S W / (pi sum S W), S = <wn, wo> / (wn . wg), over n x n slope
+ * samples plus the artificial micronormal of supplement Sec. 3.7 (the
+ * mesonormal bent toward wo, weight 1e-5), which keeps the result defined
+ * when the mesonormal faces away from wo (low tessellation silhouettes). */
+MF_INLINE mf_real mf_leadr_diffuse_sh9(mf_leadr a, mf_vec3 wo, const mf_real sh[9], int n)
+{
+    mf_ndf d = mf_leadr_ndf(a);
+    mf_real lim, w1[MF_LEADR_GRID_MAX], p1[MF_LEADR_GRID_MAX], wsum = MF_R(0.0), num, den, r, on;
+    mf_vec3 nb = mf_leadr_mean_normal(a), nt;
+    int j, k;
+    n = n < 1 ? 5 : (n > MF_LEADR_GRID_MAX ? MF_LEADR_GRID_MAX : n);
+    if (!(wo.z > MF_R(0.0)) || !sh) return MF_R(0.0);
+    lim = mf__leadr_grid_l(n);
+    for (j = 0; j < n; ++j) {
+        p1[j] = n > 1 ? -lim + MF_R(2.0) * lim * (mf_real)j / (mf_real)(n - 1) : MF_R(0.0);
+        w1[j] = MF_EXP(MF_R(-0.5) * p1[j] * p1[j]);
+        wsum += w1[j];
+    }
+    /* the artificial micronormal */
+    nt = mf_normalize(mf_add(nb, mf_scale(wo, -mf_dot(nb, wo) * MF_R(1.01))));
+    on = mf_max(mf_dot(nt, wo), MF_R(0.0));
+    den = MF_R(1e-5) * on / mf_max(nt.z, MF_R(1e-6));
+    num = den * mf_sh9_irradiance(sh, nt);
+    r = d.c[MF__LD_CXY] / (d.c[MF__LD_L00] * MF_SQRT(d.c[MF__LD_VY]));
+    for (j = 0; j < n; ++j)
+        for (k = 0; k < n; ++k) {
+            mf_real sx = p1[j] * d.c[MF__LD_L00] + d.c[MF__LD_MX];
+            mf_real sy = (r * p1[j] + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * p1[k]) * MF_SQRT(d.c[MF__LD_VY]) + d.c[MF__LD_MY];
+            mf_vec3 wn = mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
+            mf_real S = mf_max(mf_dot(wn, wo), MF_R(0.0)) / wn.z * w1[j] * w1[k] / (wsum * wsum);
+            num += S * mf_sh9_irradiance(sh, wn);
+            den += S;
+        }
+    return den > MF_R(0.0) ? num / (MF_PI * den) : MF_R(0.0);
 }
 
 /* Covariance (Eq. 9) with its validity guard: variances at least

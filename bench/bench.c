@@ -11,6 +11,8 @@
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
+#include <math.h>
+#include <stdlib.h>
 
 #define N 4096
 #define REPS 7
@@ -214,6 +216,43 @@ int main(void)
         }
     }
     printf("bench fresnel_conductor %.2f\n", run(b_fresnel, &ks[0].d));
+    /* LEADR: point-light specular, 5x5 diffuse and environment grids, pyramid build */
+    {
+        mf_leadr a = mf_leadr_with_roughness(mf_leadr_from_slope(MF_R(0.1), MF_R(-0.05)), MF_R(0.3), MF_R(0.2));
+        mf_real sh[9] = { 1, 0.2f, 0.5f, 0.1f, 0, 0, 0.05f, 0, 0 };
+        double t0, t1, s = 0.0, ts = 1e30, td = 1e30, te = 1e30, th = 1e30;
+        int it, q;
+        const int NB = 2048;
+        mf_real *h = (mf_real *)malloc(sizeof(mf_real) * NB * NB);
+        mf_leadr_map map;
+        for (it = 0; it < 5; ++it) {
+            t0 = now_ns();
+            for (q = 0; q < N; ++q) s += (double)mf_leadr_specular(a, g_wo[q], g_wi[q]);
+            t1 = now_ns(); if ((t1 - t0) / N < ts) ts = (t1 - t0) / N;
+            for (q = 0; q < N; ++q) s += (double)mf_leadr_diffuse(a, g_wo[q], g_wi[q], 5);
+            t0 = now_ns(); if ((t0 - t1) / N < td) td = (t0 - t1) / N;
+            for (q = 0; q < N; ++q) s += (double)mf_leadr_specular_env(a, g_wo[q], 5, 1, NULL, NULL).x;
+            t1 = now_ns(); if ((t1 - t0) / N < te) te = (t1 - t0) / N;
+            for (q = 0; q < N; ++q) s += (double)mf_leadr_diffuse_sh9(a, g_wo[q], sh, 5);
+            t0 = now_ns(); if ((t0 - t1) / N < th) th = (t0 - t1) / N;
+        }
+        printf("bench leadr_specular_point %.2f\n", ts);
+        printf("bench leadr_diffuse_5x5 %.2f\n", td);
+        printf("bench leadr_specular_env_5x5 %.2f\n", te);
+        printf("bench leadr_diffuse_sh9_5x5 %.2f\n", th);
+        if (h) {
+            for (q = 0; q < NB * NB; ++q) h[q] = (mf_real)(0.001 * sin(0.01 * q) * cos(0.0003 * q));
+            t0 = now_ns();
+            if (mf_leadr_map_from_heights(&map, h, NB, NB, MF_R(0.05), MF_R(0.05)) == MF_SUCCESS) {
+                t1 = now_ns();
+                printf("bench leadr_pyramid_build_2048 %.0f ms=%.1f MB=%.1f\n", t1 - t0, (t1 - t0) * 1e-6,
+                       (double)mf_leadr_map_memory_bytes(&map) / (1024.0 * 1024.0));
+                mf_leadr_map_release(&map);
+            }
+            free(h);
+        }
+        g_sink += s;
+    }
     /* LTC: quad integration (above the horizon, and crossing it), table lookup, fitting */
     {
         mf_vec3 qa[4], qc[4];
@@ -226,7 +265,6 @@ int main(void)
         /* a vertical quad in front, half below the horizon */
         qc[0] = mf_vec3_make(2, -1, -1); qc[1] = mf_vec3_make(2, -1, 1); qc[2] = mf_vec3_make(2, 1, 1); qc[3] = mf_vec3_make(2, 1, -1);
         for (it = 0; it < 3; ++it) {
-            int i;
             double ta, tc, tl;
             t0 = now_ns();
             for (i = 0; i < reps; ++i) { qa[0].x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, qa, 4, 0); }
