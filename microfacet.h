@@ -1727,7 +1727,9 @@ MF_INLINE mf_vec3 mf__leadr_grid(mf_leadr a, mf_vec3 wo, int n, int mode, mf_vec
 
 /* Specular microfacets under environment lighting (Eq. 19, 22; Algorithm 1):
  * env(wi, solid_angle, ctx) returns the prefiltered radiance for a direction
- * and the solid angle one sample covers (for the LOD of a prefiltered map).
+ * and the solid angle one sample covers, alpha = |d wi / d slope| A with
+ * A = (2 l max(sigma_x, sigma_y) / n)^2; a cube map of size s would use
+ * LOD = log2(sqrt(alpha / (4 pi)) s) (supplement, Algorithm 1).
  * n x n slope samples (5 is the paper's default); no Fresnel (F = 1);
  * self_shadowing = 0 drops Lambda(wi) (supplement Sec. 1.5). */
 MF_INLINE mf_vec3 mf_leadr_specular_env(mf_leadr a, mf_vec3 wo, int n, int self_shadowing, mf_env_fn env, void *ctx)
