@@ -1671,6 +1671,29 @@ MF_INLINE mf_real mf__leadr_grid_l(int n) { return mf_min(MF_R(0.45) * (mf_real)
 
 typedef mf_vec3 (*mf_env_fn)(mf_vec3 wi, mf_real solid_angle, void *ctx);
 
+/* The 1D points and Gaussian weights of the grid; returns the weight sum. */
+MF_INLINE mf_real mf__leadr_grid_points(int n, mf_real *p1, mf_real *w1)
+{
+    mf_real lim = mf__leadr_grid_l(n), wsum = MF_R(0.0);
+    int j;
+    for (j = 0; j < n; ++j) {
+        p1[j] = n > 1 ? -lim + MF_R(2.0) * lim * (mf_real)j / (mf_real)(n - 1) : MF_R(0.0);
+        w1[j] = MF_EXP(MF_R(-0.5) * p1[j] * p1[j]);
+        wsum += w1[j];
+    }
+    return wsum;
+}
+
+/* The micronormal of grid point (pj, pk): the sample scaled, correlated and
+ * shifted to the slope distribution (Sec. 5.1, Cholesky of the covariance). */
+MF_INLINE mf_vec3 mf__leadr_grid_normal(const mf_ndf *d, mf_real pj, mf_real pk)
+{
+    mf_real sy2 = MF_SQRT(d->c[MF__LD_VY]), r = d->c[MF__LD_CXY] / (d->c[MF__LD_L00] * sy2);
+    mf_real sx = pj * d->c[MF__LD_L00] + d->c[MF__LD_MX];
+    mf_real sy = (r * pj + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * pk) * sy2 + d->c[MF__LD_MY];
+    return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
+}
+
 /* Sum over the grid of g(wn) <wn, wo> / (wn . wg) W, where g is the
  * lighting term of the shading mode (0: environment specular, Eq. 22;
  * 1: diffuse under one directional light, Eq. 20-21), divided by the mean
@@ -1679,30 +1702,22 @@ MF_INLINE mf_vec3 mf__leadr_grid(mf_leadr a, mf_vec3 wo, int n, int mode, mf_vec
                                  mf_env_fn env, void *ctx)
 {
     mf_ndf d = mf_leadr_ndf(a);
-    mf_real lam_o, lim, w1[MF_LEADR_GRID_MAX], p1[MF_LEADR_GRID_MAX], wsum = MF_R(0.0), proj, area, r;
+    mf_real lam_o, w1[MF_LEADR_GRID_MAX], p1[MF_LEADR_GRID_MAX], wsum, proj, area;
     mf_vec3 acc = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     int j, k;
     n = n < 1 ? 1 : (n > MF_LEADR_GRID_MAX ? MF_LEADR_GRID_MAX : n);
     proj = mf__mean_surface_proj(&d, wo);
     if (!(wo.z > MF_R(0.0)) || !(proj > MF_R(0.0))) return acc;
-    lim = mf__leadr_grid_l(n);
-    for (j = 0; j < n; ++j) {
-        p1[j] = n > 1 ? -lim + MF_R(2.0) * lim * (mf_real)j / (mf_real)(n - 1) : MF_R(0.0);
-        w1[j] = MF_EXP(MF_R(-0.5) * p1[j] * p1[j]);
-        wsum += w1[j];
-    }
+    wsum = mf__leadr_grid_points(n, p1, w1);
     lam_o = mf_lambda(&d, wo);
     if (mode == 1 && shadowing) lam_o += mf_lambda(&d, wl);   /* the light is fixed: once */
-    r = d.c[MF__LD_CXY] / (d.c[MF__LD_L00] * MF_SQRT(d.c[MF__LD_VY]));
     /* slope-space area of one sample, overestimated along the longest axis */
-    area = MF_R(2.0) * (n > 1 ? lim : MF_R(1.0)) * MF_SQRT(mf_max(d.c[MF__LD_VX], d.c[MF__LD_VY])) / (mf_real)n;
+    area = MF_R(2.0) * (n > 1 ? mf__leadr_grid_l(n) : MF_R(1.0)) * MF_SQRT(mf_max(d.c[MF__LD_VX], d.c[MF__LD_VY])) / (mf_real)n;
     area *= area;
     for (j = 0; j < n; ++j)
         for (k = 0; k < n; ++k) {
-            mf_real sx = p1[j] * d.c[MF__LD_L00] + d.c[MF__LD_MX];
-            mf_real sy = (r * p1[j] + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * p1[k]) * MF_SQRT(d.c[MF__LD_VY]) + d.c[MF__LD_MY];
             mf_real W = w1[j] * w1[k] / (wsum * wsum), on, g;
-            mf_vec3 wn = mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0))), wi;
+            mf_vec3 wn = mf__leadr_grid_normal(&d, p1[j], p1[k]), wi;
             on = mf_dot(wn, wo);
             if (!(on > MF_R(0.0))) continue;
             if (mode == 0) {
@@ -1780,28 +1795,20 @@ MF_INLINE mf_real mf_sh9_irradiance(const mf_real sh[9], mf_vec3 n)
 MF_INLINE mf_real mf_leadr_diffuse_sh9(mf_leadr a, mf_vec3 wo, const mf_real sh[9], int n)
 {
     mf_ndf d = mf_leadr_ndf(a);
-    mf_real lim, w1[MF_LEADR_GRID_MAX], p1[MF_LEADR_GRID_MAX], wsum = MF_R(0.0), num, den, r, on;
+    mf_real w1[MF_LEADR_GRID_MAX], p1[MF_LEADR_GRID_MAX], wsum, num, den, on;
     mf_vec3 nb = mf_leadr_mean_normal(a), nt;
     int j, k;
     n = n < 1 ? 5 : (n > MF_LEADR_GRID_MAX ? MF_LEADR_GRID_MAX : n);
     if (!(wo.z > MF_R(0.0)) || !sh) return MF_R(0.0);
-    lim = mf__leadr_grid_l(n);
-    for (j = 0; j < n; ++j) {
-        p1[j] = n > 1 ? -lim + MF_R(2.0) * lim * (mf_real)j / (mf_real)(n - 1) : MF_R(0.0);
-        w1[j] = MF_EXP(MF_R(-0.5) * p1[j] * p1[j]);
-        wsum += w1[j];
-    }
+    wsum = mf__leadr_grid_points(n, p1, w1);
     /* the artificial micronormal */
     nt = mf_normalize(mf_add(nb, mf_scale(wo, -mf_dot(nb, wo) * MF_R(1.01))));
     on = mf_max(mf_dot(nt, wo), MF_R(0.0));
     den = MF_R(1e-5) * on / mf_max(nt.z, MF_R(1e-6));
     num = den * mf_sh9_irradiance(sh, nt);
-    r = d.c[MF__LD_CXY] / (d.c[MF__LD_L00] * MF_SQRT(d.c[MF__LD_VY]));
     for (j = 0; j < n; ++j)
         for (k = 0; k < n; ++k) {
-            mf_real sx = p1[j] * d.c[MF__LD_L00] + d.c[MF__LD_MX];
-            mf_real sy = (r * p1[j] + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * p1[k]) * MF_SQRT(d.c[MF__LD_VY]) + d.c[MF__LD_MY];
-            mf_vec3 wn = mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
+            mf_vec3 wn = mf__leadr_grid_normal(&d, p1[j], p1[k]);
             mf_real S = mf_max(mf_dot(wn, wo), MF_R(0.0)) / wn.z * w1[j] * w1[k] / (wsum * wsum);
             num += S * mf_sh9_irradiance(sh, wn);
             den += S;
