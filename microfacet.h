@@ -1515,7 +1515,13 @@ MF_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     if (!(wh.z > MF_R(0.0))) return MF_R(0.0);
     /* f grows like 1/cos at grazing retro-reflection: divide in two steps and
      * cap, so float never overflows */
-    return mf_min(mf_D(d, wh) * mf_G2(d, wo, wi, wh) / (MF_R(4.0) * mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-30))) / wi.z, MF_BIG);
+    /* wo below a tilted mean surface (LEADR): fully masked. Without this, in
+     * float G2 = 1/(1 + MF_BIG) and the clamped projection 1e-30 cancel. */
+    {
+        mf_real p = mf__mean_surface_proj(d, wo);
+        if (!(p > MF_R(0.0))) return MF_R(0.0);
+        return mf_min(mf_D(d, wh) * mf_G2(d, wo, wi, wh) / (MF_R(4.0) * p) / wi.z, MF_BIG);
+    }
 }
 
 /* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. */

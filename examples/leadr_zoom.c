@@ -1,18 +1,20 @@
 /* Demonstrates LEADR mapping (mf_leadr_map_from_heights, mf_leadr_map_lookup,
  * mf_leadr_specular, mf_leadr_specular_env, mf_leadr_diffuse) against naive
- * mip-mapped normals on a tiling, ocean-like height field seen at increasing
- * distances. Columns: the texture tiles 2, 8, 32 and 128 times across the
- * panel (the same surface ever farther away; a pixel covers 1/100 to 1.3 of a
- * tile). Rows:
- *   1. LEADR: slope moments filtered over the pixel footprint shade a
- *      non-centered anisotropic Beckmann lobe (sun, sky, diffuse);
- *   2. naive: only the filtered mean normal with the base roughness, as an
- *      ordinary normal-mapped material: far away the glitter collapses into a
- *      too-sharp mirror highlight instead of the broadened lobe.
- * Orthographic view 60 degrees from the normal, the sun at the mirror
- * direction. 4 jittered samples per pixel. Writes a tonemapped PPM and a
- * linear PFM and prints the count of non-finite values (expected 0; the exit
- * status is 1 otherwise).
+ * mip-mapped normals on an ocean-like sea: a tiling height field of eight
+ * periodic waves (RMS slope about 0.25) repeated over a large plane, seen by a
+ * perspective camera 72 degrees off the normal, facing a low sun (15 degrees
+ * up) so its glitter path is on screen, under a gradient sky.
+ * Columns: the same view ever farther away, the texture tile spanning 1/2,
+ * 1/8, 1/32 and 1/128 of the panel width at the panel center. Rows:
+ *   1. LEADR: slope moments filtered over each sample's footprint shade a
+ *      non-centered anisotropic Beckmann lobe (sun, 5x5 sky grid, diffuse);
+ *   2. naive: the filtered mean normal alone with the base roughness, as an
+ *      ordinary normal-mapped material: at a distance the sea turns into a
+ *      flat mirror with a tiny, too-sharp sun highlight.
+ * Both rows use water's Fresnel factor (eta 1.33) at the half vector.
+ * 4 jittered samples per pixel (about 3.5 s on one core at -O2). Writes a
+ * tonemapped PPM and a linear PFM and prints the count of non-finite samples
+ * (expected 0; the exit status is 1 otherwise).
  *
  *   cc -O2 -I. examples/leadr_zoom.c -o leadr_zoom -lm   (from the repo root)
  *   ./leadr_zoom [out.ppm] [out.pfm]                    (leadr_zoom.ppm, .pfm)
@@ -25,96 +27,160 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#define PW 200
-#define PH 150
+#define PW 240            /* panel size */
+#define PH 180
 #define COLS 4
 #define W (COLS * PW)
 #define H (2 * PH)
-#define N 256             /* height map size */
-#define SPP 4
+#define N 512             /* height map size */
+#define NWAVES 8
+#define SPP 4             /* 2x2 jittered */
+#define GRID 5            /* LEADR slope grid, the paper's default */
 
+/* tiles across the panel width at the center ray's hit point */
 static const mf_real tiles[COLS] = { MF_R(2.0), MF_R(8.0), MF_R(32.0), MF_R(128.0) };
 static const mf_real base_alpha = MF_R(0.05);
-static const mf_real sun = MF_R(0.15), albedo = MF_R(0.5);
+static const mf_real view_deg = MF_R(72.0), vfov_deg = MF_R(30.0), sun_deg = MF_R(15.0);
+static const mf_real sun_rgb[3] = { MF_R(6.0), MF_R(5.2), MF_R(4.2) };       /* irradiance */
+static const mf_real albedo[3] = { MF_R(0.03), MF_R(0.09), MF_R(0.11) };     /* water body */
 
-/* sky radiance: bright horizon, blue zenith */
-static mf_vec3 sky(mf_vec3 wi, mf_real solid_angle, void *ctx)
+/* Sky radiance along d (z is up): bright hazy horizon, blue zenith. */
+static mf_vec3 sky(mf_vec3 d)
 {
-    mf_real t = MF_SQRT(mf_clamp(wi.z, MF_R(0.0), MF_R(1.0)));
-    (void)solid_angle; (void)ctx;
-    return mf_vec3_make(MF_R(0.9) - MF_R(0.7) * t, MF_R(0.95) - MF_R(0.55) * t, MF_R(1.0) - MF_R(0.1) * t);
+    mf_real t = MF_SQRT(mf_clamp(d.z, MF_R(0.0), MF_R(1.0)));
+    return mf_vec3_make(MF_R(0.95) - MF_R(0.75) * t, MF_R(1.0) - MF_R(0.6) * t, MF_R(1.05) - MF_R(0.15) * t);
 }
 
-/* periodic waves with integer wave vectors: RMS slope about 0.25 */
+/* Fresnel of water for the half vector of wo and wi */
+static mf_real fresnel(mf_vec3 wo, mf_vec3 wi)
+{
+    return mf_fresnel_dielectric(mf_dot(wo, mf_normalize(mf_add(wo, wi))), MF_R(1.33));
+}
+
+/* environment callback of mf_leadr_specular_env: the sky times Fresnel, for
+ * the view direction in ctx; a gradient needs no prefiltering (solid angle) */
+static mf_vec3 sky_env(mf_vec3 wi, mf_real solid_angle, void *ctx)
+{
+    mf_vec3 wo = *(const mf_vec3 *)ctx;
+    (void)solid_angle;
+    return mf_scale(sky(wi), fresnel(wo, wi));
+}
+
+/* Periodic waves with integer wave vectors (tileable on [0,1]^2), heights in
+ * texture units; each wave has slope amplitude 0.125, so RMS slope 0.25. */
 static void make_heights(mf_real *h)
 {
-    static const int k[4][2] = { { 3, 1 }, { 1, 4 }, { -5, 2 }, { 7, 6 } };
-    static const mf_real ph[4] = { MF_R(0.3), MF_R(1.7), MF_R(4.1), MF_R(2.2) };
+    static const int k[NWAVES][2] = { { 1, 3 }, { -3, 2 }, { 2, 5 }, { 7, 4 },
+                                      { -4, 9 }, { 10, 7 }, { 5, 16 }, { -19, 11 } };
+    static const mf_real ph[NWAVES] = { MF_R(0.3), MF_R(1.7), MF_R(4.1), MF_R(2.2),
+                                        MF_R(5.0), MF_R(0.9), MF_R(3.3), MF_R(1.2) };
+    mf_real amp[NWAVES];
     int x, y, i;
+    for (i = 0; i < NWAVES; ++i)
+        amp[i] = MF_R(0.125) / (MF_R(2.0) * MF_PI * MF_SQRT((mf_real)(k[i][0] * k[i][0] + k[i][1] * k[i][1])));
     for (y = 0; y < N; ++y)
         for (x = 0; x < N; ++x) {
             mf_real u = (mf_real)x / N, v = (mf_real)y / N, s = MF_R(0.0);
-            for (i = 0; i < 4; ++i)
-                s += MF_R(0.005) * MF_SIN(MF_R(2.0) * MF_PI * ((mf_real)k[i][0] * u + (mf_real)k[i][1] * v) + ph[i]);
+            for (i = 0; i < NWAVES; ++i)
+                s += amp[i] * MF_SIN(MF_R(2.0) * MF_PI * ((mf_real)k[i][0] * u + (mf_real)k[i][1] * v) + ph[i]);
             h[y * N + x] = s;
         }
 }
 
-/* LEADR shading of the moments a */
-static mf_vec3 shade_leadr(mf_leadr a, mf_vec3 wo, mf_vec3 wi)
+/* LEADR: the whole filtered slope distribution; wo, sun in the plane's frame */
+static mf_vec3 shade_leadr(mf_leadr a, mf_vec3 wo, mf_vec3 sun)
 {
-    mf_vec3 env = mf_leadr_specular_env(a, wo, 5, 1, sky, NULL);
-    mf_real spec = sun * mf_leadr_specular(a, wo, wi), diff = sun * albedo * mf_leadr_diffuse(a, wo, wi, 5);
-    return mf_add(env, mf_vec3_make(spec + diff, spec + diff, spec + diff));
+    mf_vec3 wo_ctx = wo, c = mf_vec3_make(0, 0, 0);
+    mf_real spec, diff;
+    /* the mean surface faces away from the viewer (steep wave backs under a
+     * small footprint): black, as the grid integrals give; mf_leadr_specular
+     * alone is not 0 there in float builds */
+    if (!(wo.z - a.E_x * wo.x - a.E_y * wo.y > MF_R(0.0))) return c;
+    c = mf_leadr_specular_env(a, wo, GRID, 1, sky_env, &wo_ctx);
+    spec = mf_leadr_specular(a, wo, sun) * fresnel(wo, sun);
+    diff = mf_leadr_diffuse(a, wo, sun, GRID);
+    c.x += sun_rgb[0] * (spec + diff * albedo[0]);
+    c.y += sun_rgb[1] * (spec + diff * albedo[1]);
+    c.z += sun_rgb[2] * (spec + diff * albedo[2]);
+    return c;
 }
 
-/* naive: the filtered mean normal with the base roughness */
-static mf_vec3 shade_naive(mf_leadr a, mf_vec3 wo, mf_vec3 wi)
+/* naive: the mesonormal with the base roughness (Beckmann), mirror sky */
+static mf_vec3 shade_naive(mf_leadr a, mf_vec3 wo, mf_vec3 sun)
 {
-    mf_vec3 n = mf_leadr_mean_normal(a), t, b, lo, li, r;
+    mf_vec3 n = mf_leadr_mean_normal(a), t, b, lo, li, r, c = mf_vec3_make(0, 0, 0);
     mf_ndf d = mf_beckmann(base_alpha, base_alpha);
     mf_real spec, diff;
     mf_frame(n, &t, &b);
     lo = mf_vec3_make(mf_dot(wo, t), mf_dot(wo, b), mf_dot(wo, n));
-    li = mf_vec3_make(mf_dot(wi, t), mf_dot(wi, b), mf_dot(wi, n));
-    spec = sun * mf_brdf(&d, lo, li) * mf_max(li.z, MF_R(0.0));
-    diff = sun * albedo * mf_max(li.z, MF_R(0.0)) * MF_INV_PI;
+    li = mf_vec3_make(mf_dot(sun, t), mf_dot(sun, b), mf_dot(sun, n));
+    if (!(lo.z > MF_R(0.0))) return c;
     r = mf_reflect(wo, n);
-    return mf_add(r.z > MF_R(0.0) ? sky(r, MF_R(0.0), NULL) : mf_vec3_make(0, 0, 0), mf_vec3_make(spec + diff, spec + diff, spec + diff));
+    if (r.z > MF_R(0.0)) c = mf_scale(sky(r), fresnel(wo, r));
+    spec = mf_brdf(&d, lo, li) * mf_max(li.z, MF_R(0.0)) * fresnel(wo, sun);
+    diff = mf_max(li.z, MF_R(0.0)) * MF_INV_PI;
+    c.x += sun_rgb[0] * (spec + diff * albedo[0]);
+    c.y += sun_rgb[1] * (spec + diff * albedo[1]);
+    c.z += sun_rgb[2] * (spec + diff * albedo[2]);
+    return c;
 }
 
 int main(int argc, char **argv)
 {
     const char *ppm_path = argc > 1 ? argv[1] : "leadr_zoom.ppm";
     const char *pfm_path = argc > 2 ? argv[2] : "leadr_zoom.pfm";
-    const mf_real th = MF_R(1.0471975512);   /* 60 degrees */
-    const mf_vec3 wo = mf_vec3_make(MF_R(0.0), -MF_SIN(th), MF_COS(th)), wi = mf_vec3_make(MF_R(0.0), MF_SIN(th), MF_COS(th));
+    const mf_real deg = MF_PI / MF_R(180.0), cam_h = MF_R(1.0);
+    const mf_real th = view_deg * deg, se = sun_deg * deg;
+    /* camera at (0, 0, cam_h) looking along +y, tilted th from straight down */
+    const mf_vec3 fwd = mf_vec3_make(MF_R(0.0), MF_SIN(th), -MF_COS(th));
+    const mf_vec3 up = mf_vec3_make(MF_R(0.0), MF_COS(th), MF_SIN(th));
+    const mf_vec3 sun = mf_vec3_make(MF_R(0.0), MF_COS(se), MF_SIN(se));
+    const mf_real tan_v = MF_SIN(MF_R(0.5) * vfov_deg * deg) / MF_COS(MF_R(0.5) * vfov_deg * deg);
+    const mf_real tan_h = tan_v * (mf_real)PW / (mf_real)PH;
+    const mf_real pix_angle = MF_R(2.0) * tan_v / (mf_real)PH;
+    /* width of the view at the center ray's hit point, in world units */
+    const mf_real center_width = MF_R(2.0) * tan_h * cam_h / MF_COS(th);
     mf_real *h = (mf_real *)malloc(sizeof(mf_real) * N * N);
     float *img = (float *)malloc(sizeof(float) * 3 * W * H);
     mf_leadr_map map;
+    mf_leadr top;
+    mf_result res;
     long bad = 0;
     int px, py, s, c;
     if (!h || !img) { fprintf(stderr, "out of memory\n"); free(h); free(img); return 1; }
     make_heights(h);
-    if (mf_leadr_map_from_heights(&map, h, N, N, base_alpha, base_alpha) != MF_SUCCESS) {
-        fprintf(stderr, "moment map: failed\n");
-        free(h); free(img);
+    res = mf_leadr_map_from_heights(&map, h, N, N, base_alpha, base_alpha);
+    free(h);
+    if (res != MF_SUCCESS) {
+        fprintf(stderr, "moment map: %s\n", mf_result_string(res));
+        free(img);
         return 1;
     }
+    top = map.texels[map.offset[map.levels - 1]];   /* the mean over the whole tile */
     for (py = 0; py < H; ++py)
         for (px = 0; px < W; ++px) {
             int col = px / PW, row = py / PH;
+            mf_real tile = center_width / tiles[col];   /* tile size in world units */
             mf_real sum[3] = { 0, 0, 0 };
-            /* the view is 60 degrees off the normal: a pixel is 1/cos longer along y */
-            mf_real foot = tiles[col] / (mf_real)PW / MF_COS(th);
             rng r;
             rng_seed(&r, (uint64_t)(py * W + px));
             for (s = 0; s < SPP; ++s) {
-                mf_real x = ((mf_real)(px % PW) + rng_u(&r)) / (mf_real)PW;
-                mf_real y = ((mf_real)(py % PH) + rng_u(&r)) / (mf_real)PW / MF_COS(th);
-                mf_leadr a = mf_leadr_map_lookup(&map, tiles[col] * x, tiles[col] * y, foot);
-                mf_vec3 v = row == 0 ? shade_leadr(a, wo, wi) : shade_naive(a, wo, wi);
+                mf_real sx = (MF_R(2.0) * ((mf_real)(px % PW) + (mf_real)(s & 1) * MF_R(0.5) + MF_R(0.5) * rng_u(&r)) / (mf_real)PW - MF_R(1.0)) * tan_h;
+                mf_real sy = (MF_R(1.0) - MF_R(2.0) * ((mf_real)(py % PH) + (mf_real)(s >> 1) * MF_R(0.5) + MF_R(0.5) * rng_u(&r)) / (mf_real)PH) * tan_v;
+                mf_vec3 d = mf_normalize(mf_add(fwd, mf_add(mf_vec3_make(sx, MF_R(0.0), MF_R(0.0)), mf_scale(up, sy))));
+                mf_vec3 v, wo = mf_scale(d, MF_R(-1.0));
                 mf_real vv[3];
+                if (d.z > MF_R(-1e-3)) {
+                    v = sky(d);   /* above the horizon */
+                } else {
+                    mf_real t = cam_h / -d.z;
+                    /* footprint: the pixel's cross-section t * pix_angle is
+                     * stretched by 1/|d.z| along the view on the plane; use the
+                     * geometric mean of the two axes, in texture units */
+                    mf_real foot = t * pix_angle / (MF_SQRT(-d.z) * tile);
+                    mf_leadr a = mf_leadr_map_lookup(&map, t * d.x / tile, t * d.y / tile, foot);
+                    v = row == 0 ? shade_leadr(a, wo, sun) : shade_naive(a, wo, sun);
+                }
                 vv[0] = v.x; vv[1] = v.y; vv[2] = v.z;
                 if (!finite3(vv)) { ++bad; continue; }
                 for (c = 0; c < 3; ++c) sum[c] += vv[c];
@@ -122,10 +188,12 @@ int main(int argc, char **argv)
             for (c = 0; c < 3; ++c) img[3 * (py * W + px) + c] = (float)(sum[c] / (mf_real)SPP);
         }
     mf_leadr_map_release(&map);
-    free(h);
     if (write_images(ppm_path, pfm_path, img, W, H, W)) { free(img); return 1; }
     free(img);
-    printf("columns: the texture tiles 2, 8, 32, 128 times across the panel; rows: LEADR, naive mip-mapped normals\n");
+    printf("%d x %d panels of %d x %d: the tile spans 1/%g, 1/%g, 1/%g, 1/%g of the panel width\n",
+           COLS, 2, PW, PH, (double)tiles[0], (double)tiles[1], (double)tiles[2], (double)tiles[3]);
+    printf("rows: LEADR moments, naive mip-mapped normals (base alpha %g, RMS slope %.3f)\n", (double)base_alpha,
+           (double)MF_SQRT(top.E_xx + top.E_yy - base_alpha * base_alpha));
     printf("non-finite samples: %ld\n", bad);
     printf("wrote %s (tonemapped) and %s (linear)\n", ppm_path, pfm_path);
     return bad != 0;

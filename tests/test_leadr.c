@@ -194,6 +194,16 @@ static void test_ndf_kind(void)
         mf_vec3 below = mf_normalize(mf_vec3_make(1, 0, MF_R(0.5)));   /* cot = 0.5 < mean slope 0.8 */
         MFT_CHECK(mf_G1(&d, below, mf_vec3_make(0, 0, 1)) < 1e-6 && mft_finite(mf_lambda(&d, below)), "direction below the mean surface: masked");
     }
+    {   /* regression: viewer below the mean surface gave D/(4 wi.z) in float */
+        mf_leadr a;
+        mf_vec3 wo = mf_vec3_make(MF_R(0.5463), MF_R(-0.8347), MF_R(0.0692)), wi = mf_vec3_make(MF_R(-0.5999), MF_R(0.8001), MF_R(0.00225));
+        a.E_x = MF_R(0.790454); a.E_y = MF_R(0.279968);
+        a.E_xx = MF_R(0.00279) + a.E_x * a.E_x; a.E_yy = MF_R(0.0515) + a.E_y * a.E_y; a.E_xy = a.E_x * a.E_y;
+        {
+            mf_ndf d = mf_leadr_ndf(a);
+            MFT_CHECK(mf_brdf(&d, wo, wi) == 0 && mf_leadr_specular(a, wo, wi) == 0, "viewer below the mean surface: BRDF 0");
+        }
+    }
 }
 
 static mf_vec3 env_smooth(mf_vec3 wi, mf_real solid_angle, void *ctx)
