@@ -33,5 +33,9 @@ __global__ void mf_kernel(const float *u, float *out, int n)
         mf_ndf ld = mf_leadr_ndf(la);
         r += mf_leadr_specular(la, wo, wi) + mf_sample_visible(&ld, wo, MF_R(0.3), MF_R(0.4)).z + mf_lambda(&ld, wo);
     }
+    { /* tabulated distributions */
+    }
+    { /* Inverse Bin Map */
+    }
     out[i] = (float)r;
 }

@@ -152,6 +152,9 @@ int main(int argc, char **argv)
     MFT_RUN(test_ltmd);
     MFT_RUN(test_ltc);
     MFT_RUN(test_leadr);
+    MFT_RUN(test_tabulated);
+    MFT_RUN(test_ibm);
+    MFT_RUN(test_microsurface);
     MFT_RUN(test_robust);
     MFT_RUN(test_float);
     MFT_RUN(test_tu2);

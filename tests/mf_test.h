@@ -69,6 +69,9 @@ void test_tu2(void);
 void test_ltmd(void);
 void test_ltc(void);
 void test_leadr(void);
+void test_tabulated(void);
+void test_ibm(void);
+void test_microsurface(void);
 
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;

@@ -70,6 +70,12 @@ int main(void)
         s += mf_leadr_specular(la, wo, wi) + mf_D(&ld, wo) + mf_leadr_mean_normal(la).z + (mf_real)mf_leadr_covariance(la, &vx, &vy, &cxy);
         s += mf_leadr_map_lookup((const mf_leadr_map *)0, MF_R(0.5), MF_R(0.5), MF_R(0.1)).E_x;
     }
+    { /* tabulated distributions */
+    }
+    { /* Inverse Bin Map */
+    }
+    { /* microsurface generation, gonioreflectometer */
+    }
     mf_frame(wo, &t, &b);
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
     return s == s ? 0 : 1;
