@@ -147,6 +147,21 @@ typedef double mf_real;
 #ifndef MF_FABS
 #define MF_FABS(x) fabs(x)
 #endif
+#ifndef MF_FLOOR
+#define MF_FLOOR(x) floor(x)
+#endif
+#ifndef MF_CEIL
+#define MF_CEIL(x) ceil(x)
+#endif
+#ifndef MF_TAN
+#define MF_TAN(x) tan(x)
+#endif
+#ifndef MF_ATAN
+#define MF_ATAN(x) atan(x)
+#endif
+#ifndef MF_ASIN
+#define MF_ASIN(x) asin(x)
+#endif
 #define MF_EPS 2.220446049250313e-16
 #define MF_BIG 1e300
 #define MF_TINY 1e-300
@@ -194,6 +209,21 @@ typedef float mf_real;
 #endif
 #ifndef MF_FABS
 #define MF_FABS(x) fabsf(x)
+#endif
+#ifndef MF_FLOOR
+#define MF_FLOOR(x) floorf(x)
+#endif
+#ifndef MF_CEIL
+#define MF_CEIL(x) ceilf(x)
+#endif
+#ifndef MF_TAN
+#define MF_TAN(x) tanf(x)
+#endif
+#ifndef MF_ATAN
+#define MF_ATAN(x) atanf(x)
+#endif
+#ifndef MF_ASIN
+#define MF_ASIN(x) asinf(x)
 #endif
 #define MF_EPS 1.1920929e-7f
 #define MF_BIG 1e30f
