@@ -1152,7 +1152,7 @@ MF_INLINE void mf__tab_J(mf_real a, mf_real b, mf_real *j0, mf_real *j2)
 {
     mf_real c, sp;
     if (!(a > b)) { *j0 = MF_R(2.0) * MF_PI * b; *j2 = MF_R(0.0); return; }
-    c = -b / a;
+    c = mf_clamp(-b / a, MF_R(-1.0), MF_R(1.0));
     sp = MF_SQRT(mf_max(MF_R(1.0) - c * c, MF_R(0.0)));
     *j0 = MF_R(2.0) * (a * sp + b * MF_ACOS(c));
     *j2 = MF_R(2.0) / MF_R(3.0) * a * sp * sp * sp;
@@ -1678,7 +1678,7 @@ MF_SLOW mf_vec3 mf__tab_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     if (t->aniso) { ax = cp * cp * t->wx; ay = sp * sp * t->wy; }
     th = mf__tab_invert(t, ax, ay, u1 * (ax + ay));
     st = MF_SIN(th);
-    return mf_vec3_make(st * cp, st * sp, MF_COS(th));
+    return mf_vec3_make(st * cp, st * sp, mf_max(MF_COS(th), MF_R(0.0)));   /* float pi/2 is above pi/2 */
 }
 
 /* Integrals over theta in [ta, tb], inside control segment i, of sin(theta) P J0
@@ -1710,7 +1710,7 @@ MF_INLINE void mf__tab_outer(const mf_tabulated *t, int i, mf_real ta, mf_real t
                 /* d/dtheta_o under the integral; the clamp's boundary terms vanish */
                 mf_real ad = co * sn, bd = -so * cs, dj0, dj2;
                 if (a > b) {
-                    mf_real c = -b / a, spp = MF_SQRT(mf_max(MF_R(1.0) - c * c, MF_R(0.0)));
+                    mf_real c = mf_clamp(-b / a, MF_R(-1.0), MF_R(1.0)), spp = MF_SQRT(mf_max(MF_R(1.0) - c * c, MF_R(0.0)));
                     dj0 = MF_R(2.0) * (ad * spp + bd * MF_ACOS(c));
                     dj2 = MF_R(2.0) * spp * (ad * (MF_R(1.0) - MF_R(2.0) / MF_R(3.0) * spp * spp) + bd * c);
                 } else { dj0 = MF_R(2.0) * MF_PI * bd; dj2 = MF_R(0.0); }
@@ -1821,7 +1821,7 @@ MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
         }
     }
     cps = MF_COS(psi); sps = MF_SIN(psi);
-    return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), MF_COS(th)));
+    return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(0.0))));
 }
 
 /* wm with density D(wm) wm.z of the untransformed distribution. */
@@ -3120,7 +3120,7 @@ static int mf__tab_normalize(const mf_real *th, mf_real *c, mf_real *cum, int n)
  * theta_c = pi/2 - theta_o, the integrated part beyond. */
 static void mf__tab_node(const mf_tabulated *t, mf_real to, mf_real *out)
 {
-    mf_real so = MF_SIN(to), co = MF_COS(to), tc = MF_R(0.5) * MF_PI - to, o[4];
+    mf_real so = MF_SIN(to), co = mf_max(MF_COS(to), MF_R(0.0)), tc = mf_max(MF_R(0.5) * MF_PI - to, MF_R(0.0)), o[4];
     mf_real mxw = t->aniso ? MF_R(0.5) * t->wx : MF_R(1.0), myw = t->aniso ? MF_R(0.5) * t->wy : MF_R(0.0);
     mf_real cin = mf__tab_mass_to(t, mxw, myw, tc);
     int k = mf__tab_find(t->theta, t->n, t->inv_h, tc), j;
@@ -3202,16 +3202,19 @@ static mf_real mf__tab_slice(const mf_ndf *d, mf_real th, mf_real phi0)
 MFDEF mf_result mf_tabulated_from_ndf(mf_tabulated *t, const mf_ndf *d, int n)
 {
     const mf_real hpi = MF_R(0.5) * MF_PI;
-    mf_real *th, *dx, *dy, *cth, *cx, *cy, *cum, scale = MF_R(1.0), total = MF_R(0.0), fmax = MF_R(0.0);
-    int i, j, m, M, iso = 1, K = 800;
+    mf_real *th, *dx, *dy, *cth, *cx, *cy, *cum, *err, scale = MF_R(1.0), total = MF_R(0.0), fmax = MF_R(0.0);
+    int i, j, m, M, iso = 1, K = 800, *best;
+    char *sel;
     mf_result r;
     if (!t) return MF_ERROR_INVALID_ARGUMENT;
     mf__tab_zero(t);
     if (!d || n < 4 || n > MF_TABULATED_MAX_POINTS) return MF_ERROR_INVALID_ARGUMENT;
     M = 8 * n;   /* candidate angles */
-    th = (mf_real *)MF_MALLOC(sizeof(mf_real) * (3 * (size_t)n + 4 * (size_t)M));
+    th = (mf_real *)MF_MALLOC(sizeof(mf_real) * (3 * (size_t)n + 5 * (size_t)M) + (sizeof(int) + 1) * (size_t)M);
     if (!th) return MF_ERROR_OUT_OF_MEMORY;
-    dx = th + n; dy = th + 2 * n; cth = th + 3 * n; cx = cth + M; cy = cx + M; cum = cy + M;
+    dx = th + n; dy = th + 2 * n; cth = th + 3 * n; cx = cth + M; cy = cx + M; cum = cy + M; err = cum + M;
+    best = (int *)(void *)(err + M);
+    sel = (char *)(void *)(best + M);
     /* the median tan(theta) of D cos over a log grid of tan(theta) in [1e-5, 1e5]
      * (two passes: the total, then the median) */
     for (j = 0; j < 2; ++j) {
@@ -3243,9 +3246,12 @@ MFDEF mf_result mf_tabulated_from_ndf(mf_tabulated *t, const mf_ndf *d, int n)
         cy[i] = mf__tab_slice(d, cth[i], hpi);
         fmax = mf_max(fmax, mf_max(cx[i], cy[i]));
     }
-    /* control points equidistribute the error of linear interpolation relative
-     * to D (floored at 1e-4 of its peak): density sqrt(|D''| / D) on the
-     * candidates, plus a floor so flat parts keep some points */
+    /* Control points are candidates. Phase 1 (3/4 of them) equidistributes the
+     * error of linear interpolation relative to D (floored at 1e-4 of its
+     * peak): density sqrt(|D''| / D) plus a floor so flat parts keep points.
+     * Phase 2 adds the rest to the segments whose interpolated D cos mass is
+     * most wrong (e.g. a wide segment from a small value to zero beyond the end
+     * of a lobe, which no curvature sees), a quarter of them per pass. */
     cum[0] = MF_R(0.0);
     for (i = 1; i < M; ++i) {
         mf_real rho = MF_R(0.0), h = cth[i] - cth[i - 1];
@@ -3258,21 +3264,59 @@ MFDEF mf_result mf_tabulated_from_ndf(mf_tabulated *t, const mf_ndf *d, int n)
         }
         cum[i] = cum[i - 1] + h * (rho + MF_R(2.0) / hpi);
     }
-    th[0] = MF_R(0.0);
-    for (i = 1, j = 1; i < n - 1; ++i) {
-        mf_real target = cum[M - 1] * (mf_real)i / (mf_real)(n - 1);
+    for (i = 0; i < M; ++i) sel[i] = (char)(i == 0 || i == M - 1);
+    for (i = 1, j = 1, m = 2; i < (3 * n) / 4 - 1; ++i) {
+        mf_real target = cum[M - 1] * (mf_real)i / (mf_real)((3 * n) / 4 - 1);
         while (j < M - 1 && cum[j] < target) ++j;
-        th[i] = cth[j - 1] + (cth[j] - cth[j - 1]) * (target - cum[j - 1]) / mf_max(cum[j] - cum[j - 1], MF_TINY);
+        if (!sel[j]) { sel[j] = 1; ++m; }
     }
-    th[n - 1] = hpi;
-    for (i = 1, m = 1; i < n; ++i)
-        if (th[i] - th[m - 1] > MF_R(1e-7)) th[m++] = th[i];
-    th[m - 1] = hpi;
-    for (i = 0; i < m; ++i) {
-        dx[i] = mf__tab_slice(d, th[i], MF_R(0.0));
-        dy[i] = mf__tab_slice(d, th[i], hpi);
-        if (MF_FABS(dx[i] - dy[i]) > MF_R(1e-6) * mf_max(dx[i], dy[i])) iso = 0;
+    while (m < n) {
+        /* mass error of each segment, in units of the total */
+        mf_real emax = MF_R(0.0), thr;
+        int a = 0, nseg = 0, added = 0, want;
+        for (i = 1; i < M; ++i) {
+            if (!sel[i]) continue;
+            err[nseg] = MF_R(0.0); best[nseg] = -1;
+            {
+                mf_real be = -MF_R(1.0);
+                int k, c2;
+                for (k = a + 1; k < i; ++k)
+                    for (c2 = 0; c2 < 2; ++c2) {
+                        const mf_real *f = c2 ? cy : cx;
+                        mf_real fr = (cth[k] - cth[a]) / (cth[i] - cth[a]), lin = f[a] + (f[i] - f[a]) * fr;
+                        mf_real dev = MF_FABS(lin - f[k]);
+                        err[nseg] += dev * MF_COS(cth[k]) * MF_SIN(cth[k]) * (cth[k + 1] - cth[k - 1]) * MF_R(0.5) / total;
+                        /* split where the interpolant is furthest off: right after the end of a lobe,
+                         * mid-way inside one */
+                        if (dev > be) { be = dev; best[nseg] = k; }
+                    }
+            }
+            emax = mf_max(emax, err[nseg]);
+            ++nseg; a = i;
+        }
+        want = n - m < nseg / 4 + 1 ? n - m : nseg / 4 + 1;
+        if (!(emax > MF_R(0.0)) || want <= 0) break;
+        /* threshold: bisect for about `want` segments above it */
+        {
+            mf_real lo = MF_R(0.0), hi = emax;
+            int it, cnt;
+            for (it = 0; it < 40; ++it) {
+                thr = MF_R(0.5) * (lo + hi);
+                for (cnt = 0, i = 0; i < nseg; ++i) cnt += err[i] > thr;
+                if (cnt > want) lo = thr; else hi = thr;
+            }
+            thr = hi;
+        }
+        for (i = 0; i < nseg && m < n; ++i)
+            if ((err[i] >= thr || (added == 0 && err[i] == emax)) && best[i] > 0 && !sel[best[i]]) { sel[best[i]] = 1; ++m; ++added; }
+        if (!added) break;
     }
+    for (i = 0, m = 0; i < M; ++i)
+        if (sel[i]) {
+            th[m] = cth[i]; dx[m] = cx[i]; dy[m] = cy[i];
+            if (MF_FABS(dx[m] - dy[m]) > MF_R(1e-6) * mf_max(dx[m], dy[m])) iso = 0;
+            ++m;
+        }
     r = mf_tabulated_build(t, th, dx, iso ? (const mf_real *)0 : dy, m);
     MF_FREE(th);
     return r;

@@ -2,7 +2,8 @@
  * negative, NaN, Inf; gamma outside its domain), grazing, normal and
  * below-horizon directions, u = 0 and u -> 1. Every output must be finite;
  * D, Lambda, pdf >= 0; G1, G2 in [0, 1]; samples unit vectors or the zero
- * vector. One check per distribution kind and function family. */
+ * vector. One check per distribution kind and function family (kind 5:
+ * tabulated copies of GGX and anisotropic Beckmann with those parameters). */
 #include "mf_test.h"
 
 static int unit_or_zero(mf_vec3 m)
@@ -33,17 +34,23 @@ void test_robust(void)
     dirs[9] = mft_dir(2.0, 0.5);
     dirs[10] = mft_dir(1.5707964, 0.3);           /* just below */
     dirs[11] = mft_dir(0.05, 4.0);
-    for (kind = 0; kind < 5; ++kind) {
+    for (kind = 0; kind < 6; ++kind) {
         int bad_eval = 0, bad_smith = 0, bad_sample = 0, bad_brdf = 0;
         for (ia = 0; ia < 11; ++ia)
-            for (ig = 0; ig < (kind >= 2 ? 13 : 1); ++ig) {
+            for (ig = 0; ig < (kind >= 2 && kind <= 3 ? 13 : 1); ++ig) {
                 mf_real a = (mf_real)alphas[ia], b = (mf_real)alphas[(ia + 3) % 11], g = (mf_real)gammas[ig];
                 mf_leadr lm = mf_leadr_with_roughness(mf_leadr_from_slope(a, -b), a, b), l0 = mf_leadr_from_slope(a, b);
-                mf_ndf d = kind == 0 ? mf_beckmann(a, b) : kind == 1 ? mf_ggx(a, b) : kind == 2 ? mf_gtr(a, g)
-                         : kind == 3 ? mf_student_t(a, b, g) : mf_leadr_ndf(lm);
-                mf_ndf d0 = kind == 0 ? mf_beckmann(a, 0) : kind == 1 ? mf_ggx(0, a) : kind == 2 ? mf_gtr(0, g)
-                          : kind == 3 ? mf_student_t(a, 0, g) : mf_leadr_ndf(l0);
-                if (kind == 4 && ig > 0) break;
+                mf_tabulated ta, tb;   /* kind 5: tabulated copies of GGX (a, b) and of anisotropic Beckmann (a, 0) */
+                mf_ndf ga = mf_ggx(a, b), gb = mf_beckmann(a, 0);
+                mf_ndf d, d0;
+                if (kind == 5) {
+                    mf_tabulated_from_ndf(&ta, &ga, 24);
+                    mf_tabulated_from_ndf(&tb, &gb, 24);
+                }
+                d = kind == 0 ? mf_beckmann(a, b) : kind == 1 ? mf_ggx(a, b) : kind == 2 ? mf_gtr(a, g)
+                  : kind == 3 ? mf_student_t(a, b, g) : kind == 4 ? mf_leadr_ndf(lm) : mf_tabulated_ndf(&ta);
+                d0 = kind == 0 ? mf_beckmann(a, 0) : kind == 1 ? mf_ggx(0, a) : kind == 2 ? mf_gtr(0, g)
+                   : kind == 3 ? mf_student_t(a, 0, g) : kind == 4 ? mf_leadr_ndf(l0) : mf_tabulated_ndf(&tb);
                 for (l = 0; l < 2; ++l) {
                     const mf_ndf *dd = l ? &d0 : &d;
                     for (i = 0; i < 12; ++i) {
@@ -75,6 +82,7 @@ void test_robust(void)
                             }
                     }
                 }
+                if (kind == 5) { mf_tabulated_release(&ta); mf_tabulated_release(&tb); }
             }
         snprintf(msg, sizeof msg, "sweep kind %d: D, Lambda, projected area finite and >= 0 (%d bad)", kind, bad_eval);
         MFT_CHECK(bad_eval == 0, msg);
