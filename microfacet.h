@@ -1391,6 +1391,20 @@ MF_INLINE mf_real mf__gl_w(int i)
     return w[i];
 }
 
+/* 4-point Gauss-Legendre rule on [-1, 1], weights normalized to sum 1. */
+MF_INLINE mf_real mf__gl4_xi(int i)
+{
+    const mf_real x[4] = { MF_R(-0.86113631159405258), MF_R(-0.33998104358485626), MF_R(0.33998104358485626),
+                           MF_R(0.86113631159405258) };
+    return x[i];
+}
+MF_INLINE mf_real mf__gl4_w(int i)
+{
+    const mf_real w[4] = { MF_R(0.17392742256872693), MF_R(0.32607257743127307), MF_R(0.32607257743127307),
+                           MF_R(0.17392742256872693) };
+    return w[i];
+}
+
 /* Legendre polynomials P_0..P_(MF__GL_N) at x. */
 MF_INLINE void mf__legendre(mf_real x, mf_real *p)
 {
@@ -1684,21 +1698,24 @@ MF_SLOW mf_vec3 mf__tab_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 /* Integrals over theta in [ta, tb], inside control segment i, of sin(theta) P J0
  * and sin(theta) Q J2 (out[0], out[1]; mf__tab_lambda) for the view (so, co) =
  * (sin, cos theta_o) and, when deriv, of their theta_o-derivatives (out[2],
- * out[3]). 8-point Gauss-Legendre panels of at most 0.1 rad; with subst the
+ * out[3]). Gauss-Legendre panels of at most 0.1 rad, 8 points (4 on pieces
+ * under 0.05 rad: the integrand is smooth within a segment); with subst the
  * variable is theta = ta + (tb - ta) s^2, which smooths the (theta -
  * theta_c)^(3/2) onset of J0 at theta_c = pi/2 - theta_o. */
 MF_INLINE void mf__tab_outer(const mf_tabulated *t, int i, mf_real ta, mf_real tb, mf_real so, mf_real co,
                              int subst, int deriv, mf_real out[4])
 {
     mf_real L = tb - ta;
-    int np, p, g, k;
+    int np, p, g, k, ng;
     for (k = 0; k < 4; ++k) out[k] = MF_R(0.0);
     if (!(L > MF_R(0.0))) return;
     np = 1 + (int)(L * MF_R(10.0));
+    ng = subst || L >= MF_R(0.05) ? MF__GL_N : 4;
     for (p = 0; p < np; ++p)
-        for (g = 0; g < MF__GL_N; ++g) {
-            mf_real u = ((mf_real)p + MF_R(0.5) + MF_R(0.5) * mf__gl_xi(g)) / (mf_real)np;
-            mf_real th = subst ? ta + L * u * u : ta + L * u, wgt = mf__gl_w(g) / (mf_real)np * (subst ? MF_R(2.0) * L * u : L);
+        for (g = 0; g < ng; ++g) {
+            mf_real xi = ng == 4 ? mf__gl4_xi(g) : mf__gl_xi(g), gw = ng == 4 ? mf__gl4_w(g) : mf__gl_w(g);
+            mf_real u = ((mf_real)p + MF_R(0.5) + MF_R(0.5) * xi) / (mf_real)np;
+            mf_real th = subst ? ta + L * u * u : ta + L * u, wgt = gw / (mf_real)np * (subst ? MF_R(2.0) * L * u : L);
             mf_real vx = mf__tab_curve(t, t->dx, i, th), vy = t->aniso ? mf__tab_curve(t, t->dy, i, th) : vx;
             mf_real P = t->aniso ? MF_R(0.5) * (t->wx * vx + t->wy * vy) : vx, Q = MF_R(0.5) * (t->wx * vx - t->wy * vy);
             mf_real sn = MF_SIN(th), cs = MF_COS(th), a = so * sn, b = co * cs, j0, j2;
@@ -1733,22 +1750,22 @@ MF_INLINE mf_real mf__tab_G(mf_real psi, mf_real a, mf_real b, mf_real P, mf_rea
 
 /* Exact visible-normal sampling of a tabulated kind. The visible density
  * max(0, w.m) D(m) / I factors into a marginal in theta, sin(theta) [P J0 +
- * cos(2 phi_o) Q J2] (see mf__tab_lambda), and phi given theta. Inside theta_c =
- * pi/2 - theta_o the marginal is cos(theta_o) times the D cos mass of the curve
- * mixture (closed form, inverted as in NDF sampling); beyond it each control
- * segment's mass is integrated by Gauss-Legendre (substitution at theta_c) and
- * the chosen segment is inverted by safeguarded Newton on its partial
- * integral. phi given theta: the cosine-clamped density of mf__sample_phi_cos
+ * cos(2 phi_o) Q J2] (see mf__tab_lambda), and phi given theta. Its total is the
+ * projected area of the table. Inside theta_c = pi/2 - theta_o the marginal is
+ * cos(theta_o) times the D cos mass of the curve mixture (closed form,
+ * inverted as in NDF sampling); beyond it the control segments' masses are
+ * integrated by Gauss-Legendre (substitution at theta_c) from theta_c on until
+ * the target is reached, and that segment is inverted by safeguarded Newton on
+ * its partial integral. phi given theta: the cosine-clamped density of mf__sample_phi_cos
  * for one curve; for two, Newton on the closed-form CDF mf__tab_G. No rejection;
  * deterministic in (u1, u2). Cost grows with the number of control segments
  * beyond theta_c (see make bench). */
-#define MF__TAB_SEGBUF 64
 MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_tabulated *t = d->tab;
-    mf_real s2, len, so, co, cp = MF_R(1.0), sp = MF_R(0.0), tc, mxw, myw, cin, inner, outer = MF_R(0.0), target;
-    mf_real buf[MF__TAB_SEGBUF], o[4], th, sn, a, b, vx, vy, P, Q, psi, cps, sps;
-    int k, j, i, nseg, found = 0;
+    mf_real s2, len, so, co, cp = MF_R(1.0), sp = MF_R(0.0), tc, mxw, myw, cin, inner, outer, target;
+    mf_real o[4], th, sn, a, b, vx, vy, P, Q, psi, cps, sps, lastm = MF_R(0.0);
+    int k, j, i, nseg, last = 0;
     if (!t || !(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     s2 = w.x * w.x + w.y * w.y;
     len = MF_SQRT(s2 + w.z * w.z);
@@ -1763,40 +1780,39 @@ MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     myw = t->aniso ? MF_R(0.5) * t->wy : MF_R(0.0);
     cin = mf__tab_mass_to(t, mxw, myw, tc);
     inner = co * cin;
-    /* outer masses: the partial segment [theta_c, theta_k+1] then whole ones */
+    /* the total from the projected-area table (what D_visible divides by, to
+     * its interpolation error ~1e-9); the outer segments are integrated one by
+     * one from theta_c until the target is reached */
+    j = mf__tab_find(t->lt, t->n_lam, t->inv_hl, MF_R(0.5) * MF_PI - tc);
+    outer = mf__tab_I(t, j, 0, MF_R(0.5) * MF_PI - tc);
+    if (t->aniso) outer += (cp * cp - sp * sp) * mf__tab_I(t, j, 2, MF_R(0.5) * MF_PI - tc);
+    outer -= inner;
+    target = u1 * (inner + mf_max(outer, MF_R(0.0)));
     nseg = t->n - 1 - k;
-    for (j = 0; j < nseg; ++j) {
-        mf_real m;
-        mf__tab_outer(t, k + j, j == 0 ? tc : t->theta[k + j], t->theta[k + j + 1], so, co, j == 0, 0, o);
-        m = o[0] + (cp * cp - sp * sp) * o[1];
-        if (j < MF__TAB_SEGBUF) buf[j] = m;
-        outer += m;
-    }
-    target = u1 * (inner + outer);
     if (target <= inner || !(outer > MF_R(0.0))) {
         th = co > MF_R(0.0) ? mf__tab_invert(t, mxw, myw, mf_min(target / co, cin)) : tc;
         th = mf_min(th, tc);
     } else {
-        mf_real rem = target - inner, lo, hi, ta;
-        th = t->theta[t->n - 1];
-        for (j = 0; j < nseg && !found; ++j) {
-            mf_real m;
-            if (j < MF__TAB_SEGBUF) m = buf[j];
-            else { mf__tab_outer(t, k + j, t->theta[k + j], t->theta[k + j + 1], so, co, 0, 0, o); m = o[0] + (cp * cp - sp * sp) * o[1]; }
-            if (rem > m && j < nseg - 1) { rem -= m; continue; }
-            found = 1;
-            ta = j == 0 ? tc : t->theta[k + j];
-            lo = ta; hi = t->theta[k + j + 1];
-            th = ta + (hi - ta) * mf_clamp(rem / mf_max(m, MF_TINY), MF_R(0.0), MF_R(1.0));
-            for (i = 0; i < 60; ++i) {
-                mf_real f, df, ss = MF_SIN(th), jj0, jj2, ux, uy;
-                mf__tab_outer(t, k + j, ta, th, so, co, j == 0, 0, o);
-                f = o[0] + (cp * cp - sp * sp) * o[1] - rem;
-                ux = mf__tab_curve(t, t->dx, k + j, th); uy = t->aniso ? mf__tab_curve(t, t->dy, k + j, th) : ux;
-                mf__tab_J(so * ss, co * MF_COS(th), &jj0, &jj2);
-                df = ss * (t->aniso ? MF_R(0.5) * ((t->wx * ux + t->wy * uy) * jj0 + (cp * cp - sp * sp) * (t->wx * ux - t->wy * uy) * jj2) : ux * jj0);
-                if (mf__newton_step(&th, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + th))) break;
-            }
+        mf_real rem = target - inner, lo, hi, ta, m = MF_R(0.0);
+        for (j = 0; j < nseg; ++j) {
+            mf__tab_outer(t, k + j, j == 0 ? tc : t->theta[k + j], t->theta[k + j + 1], so, co, j == 0, 0, o);
+            m = o[0] + (cp * cp - sp * sp) * o[1];
+            if (rem <= m) break;
+            if (m > MF_R(0.0)) { last = j; lastm = m; }
+            rem -= m;
+        }
+        if (j == nseg) { j = last; m = lastm; rem = m; }   /* the table's total was a hair above the sum */
+        ta = j == 0 ? tc : t->theta[k + j];
+        lo = ta; hi = t->theta[k + j + 1];
+        th = ta + (hi - ta) * mf_clamp(rem / mf_max(m, MF_TINY), MF_R(0.0), MF_R(1.0));
+        for (i = 0; i < 60; ++i) {
+            mf_real f, df, ss = MF_SIN(th), jj0, jj2, ux, uy;
+            mf__tab_outer(t, k + j, ta, th, so, co, j == 0, 0, o);
+            f = o[0] + (cp * cp - sp * sp) * o[1] - rem;
+            ux = mf__tab_curve(t, t->dx, k + j, th); uy = t->aniso ? mf__tab_curve(t, t->dy, k + j, th) : ux;
+            mf__tab_J(so * ss, co * MF_COS(th), &jj0, &jj2);
+            df = ss * (t->aniso ? MF_R(0.5) * ((t->wx * ux + t->wy * uy) * jj0 + (cp * cp - sp * sp) * (t->wx * ux - t->wy * uy) * jj2) : ux * jj0);
+            if (mf__newton_step(&th, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + th))) break;
         }
     }
     /* phi given theta */
