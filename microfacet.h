@@ -63,6 +63,10 @@
  *     (the mean slope, hence Lambda, exists only for gamma > 1.5).
  *   - Lambda(w) is symmetric in w.z (it uses |w.z|); at w.z = 0 it is large
  *     but finite (w.z^2 is clamped to 1e-30 inside the slope).
+ *   - Tabulated distributions: control angles span [0, pi/2] (the ends are
+ *     snapped within 1e-4 rad), at most MF_TABULATED_MAX_POINTS = 65536; D is
+ *     linear in theta between them; Lambda interpolates a projected-area table
+ *     built by exact integration (relative error ~1e-9 in double).
  *
  * CONFIGURATION MACROS (define before including)
  *
@@ -77,16 +81,22 @@
  * ERROR MODEL
  *
  *   Hot-path functions never allocate, log or abort; outside their domain they
- *   return 0. Builders (LTC fitting and tables) validate input and return an mf_result
- *   (MF_SUCCESS = 0, negative codes for errors; mf_result_string() names them)
- *   and leave nothing allocated on failure. There is no global error state.
+ *   return 0. Builders (LEADR moment maps, LTC fitting and tables, tabulated
+ *   distributions, the Inverse Bin Map, microsurface generation) validate input
+ *   and return an mf_result (MF_SUCCESS = 0, negative codes for errors;
+ *   mf_result_string() names them) and leave nothing allocated on failure.
+ *   There is no global error state.
  *
  * REVISIONS
  *
  *   0.1.0  first release: Beckmann, GGX, GTR, Student-t; Smith Lambda, G1, G2;
  *          NDF and VNDF sampling; specular BRDF; Fresnel; linearly transformed
- *          microsurfaces for every distribution; Linearly Transformed Cosines
- *          (polygon integration, fitter, tables, built-in GGX table).
+ *          microsurfaces for every distribution; LEADR mapping; Linearly
+ *          Transformed Cosines (polygon integration, fitter, tables, built-in
+ *          GGX table).
+ *   0.2.0  Tabulated (piecewise-linear) distributions as a kind of mf_ndf
+ *          (mf_tabulated_build, mf_tabulated_from_ndf): every generic operation,
+ *          transforms included; mf_ndf gains the field tab.
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H

@@ -33,9 +33,21 @@ __global__ void mf_kernel(const float *u, float *out, int n)
         mf_ndf ld = mf_leadr_ndf(la);
         r += mf_leadr_specular(la, wo, wi) + mf_sample_visible(&ld, wo, MF_R(0.3), MF_R(0.4)).z + mf_lambda(&ld, wo);
     }
-    { /* tabulated distributions */
-    }
     { /* Inverse Bin Map */
     }
     out[i] = (float)r;
+}
+
+// Tabulated distributions in device code: the table's block copied to the
+// device, the struct rebased onto it (mf_tabulated_rebase) and passed by value.
+__global__ void mf_kernel_tabulated(mf_tabulated t, const float *u, float *out, int n)
+{
+    int i = blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    mf_ndf d = mf_tabulated_ndf(&t);
+    mf_ndf dt = mf_transformed(d, mf_mat2_make(MF_R(1.2), MF_R(0.1), MF_R(0.0), MF_R(0.9)));
+    mf_vec3 wo = mf_normalize(mf_vec3_make((mf_real)u[i], MF_R(0.2), MF_R(0.8)));
+    mf_vec3 wi = mf_brdf_sample(&dt, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);
+    mf_vec3 wm = mf_sample_D(&d, (mf_real)u[i], MF_R(0.5));
+    out[i] = (float)(mf_brdf(&dt, wo, wi) + mf_brdf_pdf(&dt, wo, wi) + mf_D(&d, wm) + mf_lambda(&d, wo));
 }

@@ -71,6 +71,19 @@ int main(void)
         s += mf_leadr_map_lookup((const mf_leadr_map *)0, MF_R(0.5), MF_R(0.5), MF_R(0.1)).E_x;
     }
     { /* tabulated distributions */
+        mf_real th[3] = { MF_R(0.0), MF_R(0.8), MF_R(1.5707963267948966) }, dv[3] = { MF_R(2.0), MF_R(1.0), MF_R(0.0) };
+        mf_tabulated t1, t2, t3;
+        mf_ndf d1, d2;
+        if (mf_tabulated_build(&t1, th, dv, (const mf_real *)0, 3) == MF_SUCCESS &&
+            mf_tabulated_from_ndf(&t2, &k[1], 16) == MF_SUCCESS) {
+            t3 = mf_tabulated_rebase(&t1, t1.block);
+            d1 = mf_tabulated_ndf(&t3);
+            d2 = mf_transformed(mf_tabulated_ndf(&t2), mf_mat2_make(MF_R(1.0), MF_R(0.5), MF_R(0.0), MF_R(1.0)));
+            s += mf_D(&d1, wo) + mf_lambda(&d2, wo) + mf_sample_visible(&d2, wo, MF_R(0.2), MF_R(0.4)).z;
+            s += mf_sample_D(&d1, MF_R(0.5), MF_R(0.5)).z + (mf_real)mf_tabulated_memory_bytes(&t2);
+        }
+        mf_tabulated_release(&t1);
+        mf_tabulated_release(&t2);
     }
     { /* Inverse Bin Map */
     }
