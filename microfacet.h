@@ -784,6 +784,7 @@ MF_INLINE mf_ndf mf_tabulated_ndf(const mf_tabulated *t)
 MF_INLINE int mf__tab_find(const mf_real *x, int n, mf_real inv_h, mf_real v)
 {
     int lo = 0, hi = n - 1;
+    if (!(v > x[0])) return 0;   /* also NaN */
     if (inv_h > MF_R(0.0)) {
         int i = (int)mf_clamp(v * inv_h, MF_R(0.0), (mf_real)(n - 2));
         /* round-off may put v one interval off */
