@@ -2680,8 +2680,12 @@ MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
  * theta and tan(theta) scaled by the median slope), so narrow lobes and long
  * tails are both resolved; D_x and D_y are the means of the slices phi = 0, pi and
  * phi = pi/2, 3 pi/2 (so a general transformed or non-centered distribution is
- * approximated by its Eq. 10 form). The distribution refers to t: keep t alive
- * and unchanged while it is used. */
+ * approximated by its Eq. 10 form, which is not elliptical anisotropy: for GGX
+ * 0.3 x 0.1 D differs by up to 40% on the x axis and 3x elsewhere; for
+ * elliptical anisotropy tabulate the isotropic base of roughness
+ * sqrt(ax ay) and apply mf_transformed with M = diag(a/ax, a/ay), exact to the
+ * tabulation error). The distribution refers to t: keep t alive and unchanged
+ * while it is used. */
 #define MF_TABULATED_MAX_POINTS 65536
 MFDEF mf_result mf_tabulated_build(mf_tabulated *t, const mf_real *theta, const mf_real *D_x,
                                    const mf_real *D_y, int n);
