@@ -2314,6 +2314,14 @@ MFDEF mf_result mf_microsurface_generate(const mf_ndf *d, int size, int iteratio
                                          mf_real *heights);
 MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_microsurface_options *o,
                                             mf_real *heights, mf_microsurface_stats *stats);
+/* Step 3 alone: the periodic height field (mean 0) whose triangles and
+ * central differences best fit per-point slopes gradients_xy (size*size*2,
+ * x and y interleaved) in the least-squares sense; the discrete Poisson
+ * equation, solved by FFT in double. A field that is the central difference
+ * of a smooth surface gives that surface back up to O(w^2) per Fourier mode w
+ * (the mode's amplitude times cos^2(w/2)). Same size rules and errors as the
+ * generator; non-finite input: MF_ERROR_INVALID_DATA. */
+MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size, mf_real *heights);
 
 /* The virtual gonioreflectometer (Ribardiere et al. 2019, Sec. 2): a
  * collimated beam from wi lights a periodic height field (heights in units of
@@ -2868,6 +2876,30 @@ static void mf__sort_d(double *a, size_t n)
     (void)i;
 }
 
+/* The k-th smallest of a[0..n) (Hoare's selection; reorders a). */
+static double mf__select_d(double *a, size_t n, size_t k)
+{
+    size_t lo = 0, hi = n - 1;
+    while (lo < hi) {
+        double p = a[lo + (hi - lo) / 2], t;
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (a[i] < p) ++i;
+            while (p < a[j]) --j;
+            if (i <= j) {
+                t = a[i]; a[i] = a[j]; a[j] = t;
+                ++i;
+                if (j == 0) break;
+                --j;
+            }
+        }
+        if (k <= j) hi = j;
+        else if (k >= i) lo = i;
+        else break;
+    }
+    return a[k];
+}
+
 /* ---- FFT: radix-2, complex, double precision (interleaved re, im), for
  * power-of-two sizes. Twiddles cos/sin(2 pi k / n), k < n/2, from the
  * half-angle recursion cos(a/2) = sqrt((1 + cos a)/2), sin(a/2) = sin a /
@@ -2994,7 +3026,7 @@ typedef struct mf__ms {
     double *tx, *ty, *h, *eps, *z, *tmp, *fc, *fs;
     double *px, *py, *qx, *qy, *sx, *sy, *ex, *ey;   /* pool (binned), queries, sorted Q_m, grid lines */
     int *cell, *start, *count;
-    double sbar;
+    double sbar;          /* mean |tx| + |ty| of Q_m */
 } mf__ms;
 
 static void mf__ms_zero(mf__ms *m)
@@ -3143,18 +3175,25 @@ static void mf__ms_rematch(mf__ms *m, int k, mf__pcg *rng)
         int p = m->start[b] + m->count[b]++;
         m->px[p] = m->tx[i]; m->py[p] = m->ty[i];
     }
-    /* the queries' spread matched to the pool's, per axis (RMS): early on the
-     * integrated field is much smoother than its targets, and nearest values
-     * to the shrunken queries would empty the middle of the pool first */
+    /* the queries' spread matched to the pool's, per axis, when they are
+     * narrower (the median of |slope|, which heavy tails do not sway): early
+     * on the integrated field is much smoother than its targets, and nearest
+     * values to the shrunken queries would empty the middle of the pool
+     * first. Measured on Beckmann 0.5, 128^2, 150 iterations: the density of
+     * the smallest slopes 0.83 of D without, 0.93 with. Queries broader than
+     * the pool (heavy tails later on) are left alone: shrinking them hurts. */
     {
-        double a = 0.0, b = 0.0, c = 0.0, e = 0.0, fx, fy;
-        for (j = 0; j < k; ++j) {
-            a += m->qx[j] * m->qx[j]; b += m->qy[j] * m->qy[j];
-            c += m->px[j] * m->px[j]; e += m->py[j] * m->py[j];
+        double f[2];
+        int ax;
+        for (ax = 0; ax < 2; ++ax) {
+            const double *qa = ax ? m->qy : m->qx, *pa = ax ? m->py : m->px;
+            double mq, mp;
+            for (j = 0; j < k; ++j) { m->z[j] = mf__absd(qa[j]); m->z[k + j] = mf__absd(pa[j]); }
+            mq = mf__select_d(m->z, (size_t)k, (size_t)k / 2);
+            mp = mf__select_d(m->z + k, (size_t)k, (size_t)k / 2);
+            f[ax] = mq > 0.0 && mp > 0.0 && mp > mq ? mp / mq : 1.0;
         }
-        fx = a > 0.0 ? mf__sqrt_d(c / a) : 1.0;
-        fy = b > 0.0 ? mf__sqrt_d(e / b) : 1.0;
-        for (j = 0; j < k; ++j) { m->qx[j] *= fx; m->qy[j] *= fy; }
+        for (j = 0; j < k; ++j) { m->qx[j] *= f[0]; m->qy[j] *= f[1]; }
     }
     /* serve the points in a random order */
     for (j = k - 1; j > 0; --j) {
@@ -3330,6 +3369,33 @@ MFDEF mf_result mf_microsurface_generate(const mf_ndf *d, int size, int iteratio
     o.iterations = iterations;
     o.seed = seed;
     return mf_microsurface_generate_ex(d, size, &o, heights, 0);
+}
+
+MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size, mf_real *heights)
+{
+    mf__ms m;
+    size_t i, n2;
+    if (!gradients_xy || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE)
+        return MF_ERROR_INVALID_ARGUMENT;
+    n2 = (size_t)size * (size_t)size;
+    for (i = 0; i < 2 * n2; ++i)
+        if (!(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+    mf__ms_zero(&m);
+    m.n = size; m.n2 = n2;
+    m.tx = (double *)MF_MALLOC(sizeof(double) * n2);
+    m.ty = (double *)MF_MALLOC(sizeof(double) * n2);
+    m.h = (double *)MF_MALLOC(sizeof(double) * n2);
+    m.z = (double *)MF_MALLOC(sizeof(double) * 2 * n2);
+    m.tmp = (double *)MF_MALLOC(sizeof(double) * 16 * (size_t)size);
+    m.fc = (double *)MF_MALLOC(sizeof(double) * (size_t)size);
+    m.fs = (double *)MF_MALLOC(sizeof(double) * (size_t)size);
+    if (!m.tx || !m.ty || !m.h || !m.z || !m.tmp || !m.fc || !m.fs) { mf__ms_free(&m); return MF_ERROR_OUT_OF_MEMORY; }
+    mf__fft_twiddles(m.fc, m.fs, size);
+    for (i = 0; i < n2; ++i) { m.tx[i] = (double)gradients_xy[2 * i]; m.ty[i] = (double)gradients_xy[2 * i + 1]; }
+    mf__ms_integrate(&m);
+    for (i = 0; i < n2; ++i) heights[i] = (mf_real)m.h[i];
+    mf__ms_free(&m);
+    return MF_SUCCESS;
 }
 
 /* ---- The virtual gonioreflectometer ---- */
