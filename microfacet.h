@@ -87,6 +87,8 @@
  *          NDF and VNDF sampling; specular BRDF; Fresnel; linearly transformed
  *          microsurfaces for every distribution; Linearly Transformed Cosines
  *          (polygon integration, fitter, tables, built-in GGX table).
+ *   0.2.0  Microsurface generation: height fields from any distribution
+ *          (Ribardiere et al. 2019, Alg. 1) and a virtual gonioreflectometer.
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
@@ -2167,7 +2169,12 @@ MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
 /* ======================================================================== */
 /* == 13. Microsurface generation and a virtual gonioreflectometer          */
 /* ======================================================================== */
-/* (inline part; generator and tracer in section 14) */
+/* Ribardiere, Bringier, Meneveaux, Simonot 2019, "Microfacet BSDFs Generated
+ * from NDFs and Explicit Microgeometry", Sec. 2 and 4: periodic height fields
+ * whose normals follow any mf_ndf (Algorithm 1: slopes Q_m sampled from D,
+ * Schwarz error Eq. 19, least-squares integration Eq. 20-21 with the discrete
+ * derivatives of Eq. 22, re-matching), and a virtual gonioreflectometer that
+ * traces them. Everything is built and run in section 14 (no inline part). */
 
 /* ======================================================================== */
 /* == 14. Non-inline functions                                              */
@@ -2263,9 +2270,16 @@ MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
  * from (x+1, y) to (x, y+1), the geometry mf_gonio_measure traces): every
  * triangle's slope is a one-sided difference at one of its corners, and the
  * generator targets one-sided and central differences alike (see the
- * implementation). size must be a power of two in [MF_MICROSURFACE_MIN_SIZE,
+ * implementation). The surface converges toward one that is smooth over a
+ * few cells (slopes of neighbours correlated, as they must be for the two
+ * readings to agree): histograms match D to a few percent for light tails
+ * (Beckmann); heavy tails (GGX, GTR, Student-t at small gamma) converge
+ * slowly and keep too few near-normal facets (GGX 0.4: 35% too few at 150
+ * iterations). size must be a power of two in [MF_MICROSURFACE_MIN_SIZE,
  * MF_MICROSURFACE_MAX_SIZE]; memory about 100 bytes per cell; time about
- * 0.1 us per cell and iteration. Deterministic for a seed. d must be centered
+ * 0.15 us per cell and iteration (1024^2 x 500 in 82 s, one core).
+ * Deterministic for a seed (within one build: float and double builds draw
+ * different samples). d must be centered
  * (every periodic surface has mean slope 0): a LEADR distribution with a
  * non-zero mean slope is rejected. Errors: NULL pointers, bad size, negative
  * iterations, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
@@ -3048,8 +3062,19 @@ static void mf__ifft2_real(double *a, int n, const double *c, const double *s, d
  * the next ring cannot hold anything nearer, so the match is exact. The grid
  * lines sit at quantiles of Q_m (a uniform grid in the marginal CDFs), so
  * heavy tails (GGX, Student-t) do not pile every sample into one cell: about
- * two pool values per cell on average and O(1) work per query. The targets
- * stay a permutation of Q_m at every step. */
+ * sixteen pool values per cell and O(1) work per query on average. The
+ * targets stay a permutation of Q_m at every step. Before the search the
+ * queries' spread is matched to the pool's (see mf__ms_rematch).
+ *
+ * Measured alternatives (Beckmann 0.5, 256^2, 200 iterations; total variation
+ * of the central / triangle slope histograms against D, fraction of cells
+ * below the threshold): the paper's continuous symbol with Eq. 19, 0.029 /
+ * 0.027, 47%; the central symbol sin w alone, 0.011 / 0.54 (the triangles,
+ * i.e. the traced surface, are 2.4 times too rough: checkerboard), 87%;
+ * forward differences only, 0.035 / 0.027, 11%; this scheme, 0.033 / 0.030,
+ * 51%, then 0.03 / 0.03 and 67% with the spread matching. All schemes that
+ * keep the triangles right converge to surfaces whose neighbouring slopes are
+ * correlated (0.97 to 0.99 at lag 1). */
 
 static double mf__absd(double x) { return x < 0.0 ? -x : x; }
 static double mf__mind(double a, double b) { return a < b ? a : b; }
