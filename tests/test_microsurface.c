@@ -1,38 +1,55 @@
 /* Microsurface generation (Ribardiere et al. 2019, Alg. 1) and the virtual
- * gonioreflectometer.
+ * gonioreflectometer. Measured values below are double / float builds.
  *
  * Integration (Step 3): a single Fourier mode's central differences come back
- * with the amplitude times cos^2(w/2) (the least-squares solution, derived by
- * hand): 1e-9 relative in double, 1e-4 in float (float heights).
- * Generation: the slope histogram of the result, central differences and
- * triangle slopes alike, against D: total variation distance over 13 radial x
- * 8 azimuthal cells of the normalized slope plane, the expected mass of each
- * cell from Gauss-Legendre quadrature of P22 = D cos^4 (not from the
- * sampler). A random sample of 16384 slopes has TV about 0.04 on these cells;
- * the generated surfaces measure 0.02 to 0.04 (their slopes are a stratified
- * sample, re-arranged); tolerance 0.07. RMS slope within 3% of the sampled set's (measured
- * 0.6 to 1.3% low: the least-squares fit shrinks what it cannot realize).
- * The gradient field returned is a permutation of Q_m (exact: same multiset
- * after 0 and 150 iterations). Schwarz error: recomputed here from Eq. 19 on
- * the returned gradients, equal to the library's (1e-9), the fraction below
- * 0.02 equal to the stats; at least 50% of the cells below the threshold
- * after 200 iterations (measured 67% on 256^2) and mean |central - target|
- * below 5% of the mean slope (measured 2%).
+ * as the mode times its least-squares gain (sin^2 wx + sin^2 wy) /
+ * (2 (2 - cos wx - cos wy)), derived by hand: 1e-9 of the amplitude in
+ * double (measured 1e-14), 1e-4 in float (float heights and gradients).
+ *
+ * Generation (128^2, 150 iterations): the slope histogram of the result,
+ * central differences and triangle slopes alike, against D, as the total
+ * variation distance (TV) over 13 radial x 8 azimuthal cells of the slope
+ * plane normalized by (alpha_x, alpha_y); the expected mass of each cell is
+ * Gauss-Legendre quadrature of P22 = D cos^4 (never the sampler). A random
+ * sample of 16384 slopes scores about 0.04 on these cells.
+ *   light tails (Beckmann 0.6 x 0.25; Beckmann 0.3 sheared by diag(1, 0.5)):
+ *     measured 0.028 to 0.037; tolerance 0.06. Median slope length within 3%
+ *     of the sampled set's (measured 0.4 to 1.0%), RMS within 4% (measured
+ *     1.5 to 2.5% low: the least-squares fit shrinks what it cannot realize).
+ *   heavy tails (GGX 0.4, Student-t 0.3 gamma 3): the known slow convergence
+ *     (header, mf_microsurface_generate): TV measured 0.056 to 0.093,
+ *     tolerance 0.13; median within 15% (measured 1 to 2% Student-t, 12% GGX);
+ *     no RMS check (the RMS of a heavy-tailed sample is its few largest values).
+ * The gradient field returned stays a permutation of Q_m (exact: the same
+ * multiset after 0 and 150 iterations); same seed, identical heights; another
+ * seed, another surface; mean height 0.
+ * Schwarz error (256^2 Beckmann 0.5, 200 iterations): eps recomputed here
+ * from Eq. 19 on the returned gradients equals the library's (1e-9 / 1e-4
+ * relative) and the fraction at or under 0.02 equals stats.below (exact count);
+ * at least half the cells below (measured 67%); the central differences within
+ * 5% of their targets on average (measured 3.4% / 3.9%).
+ *
  * Gonioreflectometer: sensor cells of equal solid angle tile the hemisphere
- * (exact up to rounding), every cell's center maps back to it. A flat mirror
- * sends everything into the mirror direction's cell; a flat Lambertian plane
- * of albedo 0.8 fills each cell with 0.8 (z_hi^2 - z_lo^2) / n_ring (exact;
- * 5 standard errors of the 2e5-ray estimate + 1e-3); a 45-degree V-groove
- * returns all light at normal incidence after exactly two bounces.
- * Energy: mirror facets on a generated surface, first + multiple + lost = 1
- * to 1e-9 (1e-5 float), nothing lost, no leak. First bounce against the
- * Smith model (mf_brdf cos with height-correlated G2, integrated per cell):
- * Beckmann alpha 0.5, theta_i = 1 rad, 256^2, 200 iterations, 4e5 rays, 147
- * cells: the first-bounce energy within 2% of the model's albedo (measured
- * 0.2 to 1.4% over 8 surfaces) and the relative L1 distance of the lobes,
- * sum |measured - model| / sum model, below 0.12 (measured 0.068 to 0.086
- * per 128^2 surface, 0.03 averaged over 8 surfaces: the difference is the
- * finite surface, each one a few thousand independent facets wide). */
+ * (1e-9 / 1e-5), every cell's center maps back to it, random directions fall
+ * in the cell whose bounds hold them, aspect ratios in [0.6, 1.6]. A flat
+ * mirror sends everything into the mirror direction's cell (exact); a flat
+ * Lambertian plane of albedo 0.8 fills each cell with 0.8 (z_hi^2 - z_lo^2) /
+ * n_ring (5 standard errors of the 2e5-ray estimate + 1e-3) and reflects 0.8;
+ * a 45-degree V-groove returns all light at normal incidence after exactly two
+ * bounces (1e-3: rays that hit a ridge or valley edge exactly).
+ * Energy: mirror facets and Lambertian facets of albedo 1 on a generated
+ * surface, first + multiple + lost = 1 to 1e-9 / 1e-5, nothing lost, no leak.
+ * First bounce against the Smith model (mf_brdf cos with the height-correlated
+ * G2, integrated per cell by an 8 x 8 midpoint rule): Beckmann alpha 0.5,
+ * theta_i = 1 rad, 256^2, 200 iterations, 4e5 rays, 147 cells.
+ *   first-bounce energy within 2% of the model's albedo (measured +0.5% /
+ *   +0.8%; 0.2 to 1.4% over eight 128^2 surfaces);
+ *   relative L1 distance of the lobes, sum |measured - model| / sum model,
+ *   below 0.12 (measured 0.036 / 0.038; 0.068 to 0.086 per 128^2 surface and
+ *   0.03 averaged over eight: the rest is the finite surface, a few thousand
+ *   independent facets). The same measurement against the model at alpha
+ *   0.45 or 0.55 gives 0.157 / 0.155, at 0.4 or 0.6 0.33 / 0.29: a roughness
+ *   10% off fails. */
 #include "mf_test.h"
 #include <stdlib.h>
 
@@ -275,7 +292,7 @@ static mf_real *check_histogram(const char *name, mf_ndf d, double ax, double ay
         for (i = 0; i < 2 * n * n; ++i) rq += (double)g[i] * (double)g[i];
         rq = sqrt(rq / (2.0 * n * n));
         sprintf(msg, "%s: RMS central slope vs the sampled slopes'", name);
-        MFT_NEAR(rms_central(h, n), rq, 0.03, 0.0, msg);
+        MFT_NEAR(rms_central(h, n), rq, 0.04, 0.0, msg);
     }
     free(ref);
     *grad_out = g; *eps_out = e;
