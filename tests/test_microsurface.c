@@ -13,13 +13,14 @@
  * Gauss-Legendre quadrature of P22 = D cos^4 (never the sampler). A random
  * sample of 16384 slopes scores about 0.04 on these cells.
  *   light tails (Beckmann 0.6 x 0.25; Beckmann 0.3 sheared by diag(1, 0.5)):
- *     measured 0.028 to 0.037; tolerance 0.06. Median slope length within 3%
- *     of the sampled set's (measured 0.4 to 1.0%), RMS within 4% (measured
- *     1.5 to 2.5% low: the least-squares fit shrinks what it cannot realize).
- *   heavy tails (GGX 0.4, Student-t 0.3 gamma 3): the known slow convergence
- *     (header, mf_microsurface_generate): TV measured 0.056 to 0.093,
- *     tolerance 0.13; median within 15% (measured 1 to 2% Student-t, 12% GGX);
- *     no RMS check (the RMS of a heavy-tailed sample is its few largest values).
+ *     measured 0.025 to 0.031; tolerance 0.06. Median slope length within 3%
+ *     of the sampled set's (measured 1.0 to 1.7%), RMS within 4% (measured
+ *     1.4 to 1.8% low: the least-squares fit shrinks what it cannot realize).
+ *   heavy tails (GGX 0.4, Student-t 0.3 gamma 3): TV measured 0.041 to 0.051,
+ *     tolerance 0.08; median within 5% (measured 0.6 to 2.0%); no RMS check
+ *     (the RMS of a heavy-tailed sample is its few largest values). With
+ *     every cell above the threshold re-matched (max_rematch 1, the paper)
+ *     GGX measures 0.093 and a median 12% high: this test fails there.
  * The gradient field returned stays a permutation of Q_m (exact: the same
  * multiset after 0 and 150 iterations); same seed, identical heights; another
  * seed, another surface; mean height 0.
@@ -27,7 +28,7 @@
  * from Eq. 19 on the returned gradients equals the library's (1e-9 / 1e-4
  * relative) and the fraction at or under 0.02 equals stats.below (exact count);
  * at least half the cells below (measured 67%); the central differences within
- * 5% of their targets on average (measured 3.4% / 3.9%).
+ * 5% of their targets on average (measured 3.3% / 3.9%).
  *
  * Gonioreflectometer: sensor cells of equal solid angle tile the hemisphere
  * (1e-9 / 1e-5), every cell's center maps back to it, random directions fall
@@ -42,7 +43,7 @@
  * First bounce against the Smith model (mf_brdf cos with the height-correlated
  * G2, integrated per cell by an 8 x 8 midpoint rule): Beckmann alpha 0.5,
  * theta_i = 1 rad, 256^2, 200 iterations, 4e5 rays, 147 cells.
- *   first-bounce energy within 2% of the model's albedo (measured +0.5% /
+ *   first-bounce energy within 2% of the model's albedo (measured +0.4% /
  *   +0.8%; 0.2 to 1.4% over eight 128^2 surfaces);
  *   relative L1 distance of the lobes, sum |measured - model| / sum model,
  *   below 0.12 (measured 0.036 / 0.038; 0.068 to 0.086 per 128^2 surface and
@@ -196,6 +197,14 @@ static void test_validation(void)
     MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: negative threshold");
     MFT_CHECK(mf_microsurface_generate_ex(&b, 64, NULL, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: NULL options");
     o.threshold = MF_MICROSURFACE_THRESHOLD;
+    o.max_rematch = MF_R(-0.1);
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: negative max_rematch");
+    o.max_rematch = MF_R(1.5);
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: max_rematch above 1");
+    o.max_rematch = MF_R(1.0);   /* the paper's re-matching of every cell above the threshold */
+    o.iterations = 20;
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_SUCCESS, "generate: max_rematch 1 (the paper)");
+    o.max_rematch = MF_R(0.0);
     o.iterations = 0;
     MFT_CHECK(mf_microsurface_generate_ex(&b, 8, &o, h, NULL) == MF_SUCCESS, "generate: smallest size, no iteration");
 }
@@ -273,7 +282,7 @@ static mf_real *check_histogram(const char *name, mf_ndf d, double ax, double ay
     mf_real *e = (mf_real *)malloc(sizeof(mf_real) * n * n);
     mf_microsurface_options o;
     hist_ref *ref = (hist_ref *)malloc(sizeof(hist_ref));
-    double tv0, tv1, rq = 0.0, tol = heavy ? 0.13 : 0.06;
+    double tv0, tv1, rq = 0.0, tol = heavy ? 0.08 : 0.06;
     int i;
     char msg[200];
     mf_microsurface_options_default(&o);
@@ -287,7 +296,7 @@ static mf_real *check_histogram(const char *name, mf_ndf d, double ax, double ay
     sprintf(msg, "%s: TV of the triangle slopes vs D", name);
     MFT_NEAR(tv1, 0.0, 0.0, tol, msg);
     sprintf(msg, "%s: median central slope length vs the sampled slopes'", name);
-    MFT_NEAR(median_slope(h, g, n, 0), median_slope(h, g, n, 1), heavy ? 0.15 : 0.03, 0.0, msg);
+    MFT_NEAR(median_slope(h, g, n, 0), median_slope(h, g, n, 1), heavy ? 0.05 : 0.03, 0.0, msg);
     if (!heavy) {
         for (i = 0; i < 2 * n * n; ++i) rq += (double)g[i] * (double)g[i];
         rq = sqrt(rq / (2.0 * n * n));
