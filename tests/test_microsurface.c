@@ -54,6 +54,9 @@
 #include "mf_test.h"
 #include <stdlib.h>
 
+/* measured values, printed at the end */
+static double g_tv_light, g_tv_heavy, g_below, g_e1, g_e1_model, g_l1;
+
 static int cmp_real(const void *a, const void *b)
 {
     mf_real x = *(const mf_real *)a, y = *(const mf_real *)b;
@@ -295,6 +298,8 @@ static mf_real *check_histogram(const char *name, mf_ndf d, double ax, double ay
     MFT_NEAR(tv0, 0.0, 0.0, tol, msg);
     sprintf(msg, "%s: TV of the triangle slopes vs D", name);
     MFT_NEAR(tv1, 0.0, 0.0, tol, msg);
+    if (heavy) g_tv_heavy = fmax(g_tv_heavy, fmax(tv0, tv1));
+    else g_tv_light = fmax(g_tv_light, fmax(tv0, tv1));
     sprintf(msg, "%s: median central slope length vs the sampled slopes'", name);
     MFT_NEAR(median_slope(h, g, n, 0), median_slope(h, g, n, 1), heavy ? 0.05 : 0.03, 0.0, msg);
     if (!heavy) {
@@ -328,6 +333,7 @@ static void check_schwarz(const mf_real *h, const mf_real *g, const mf_real *e, 
     MFT_CHECK(same, "Schwarz error: eps(x, y) equals Eq. 19 on the returned gradients");
     MFT_NEAR((double)st->below, (double)below / (n * n), 0.0, 2.5 / (n * n), "Schwarz error: stats.below counts the cells at or under 0.02");
     MFT_NEAR((double)st->below, 1.0, 0.0, 0.5, "Schwarz error: at least half of the cells below the threshold");
+    g_below = (double)st->below;
     MFT_NEAR(dev / (n * n) / sbar, 0.0, 0.0, 0.05, "surface consistent with its gradients: mean |central - target| / mean |target|");
     MFT_CHECK(st->iterations == iters && st->rms_central > MF_R(0.0) && st->rms_triangle > MF_R(0.0), "stats filled");
 }
@@ -490,6 +496,7 @@ static void test_gonio_beckmann(void)
     for (c = 0; c < g.cells; ++c) { l1 += fabs((double)g.first[c] - (double)model[c]); sm += (double)model[c]; }
     MFT_NEAR(g.energy_first, sm, 0.02, 0.0, "gonio: first-bounce energy vs the Smith albedo (Beckmann 0.5, theta_i 1)");
     MFT_NEAR(l1 / sm, 0.0, 0.0, 0.12, "gonio: first-bounce lobe vs mf_brdf cos, relative L1 (Beckmann 0.5, theta_i 1)");
+    g_e1 = (double)g.energy_first; g_e1_model = sm; g_l1 = l1 / sm;
     /* Lambertian facets of albedo 1 keep the energy too */
     cfg.facet = MF_FACET_LAMBERT; cfg.rays = 50000;
     mf_gonio_measure(&g, h, n, &cfg);
@@ -509,4 +516,7 @@ void test_microsurface(void)
     test_sensor();
     test_gonio_exact();
     test_gonio_beckmann();
+    printf("    microsurface: slope histogram TV vs D, worst %.3f (Beckmann), %.3f (GGX, Student-t); "
+           "Schwarz eps <= 0.02 on %.0f%% of 256^2; first bounce %.4f vs Smith %.4f, lobe L1 %.3f\n",
+           g_tv_light, g_tv_heavy, 100.0 * g_below, g_e1, g_e1_model, g_l1);
 }
