@@ -247,6 +247,13 @@ static void test_determinism(void)
     qsort(g1, (size_t)(2 * n * n), sizeof(mf_real), cmp_real);
     for (i = 0; i < 2 * n * n; ++i) if (g0[i] != g1[i]) perm = 0;
     MFT_CHECK(perm, "re-matching keeps the multiset of sampled slopes Q_m");
+    /* independent (not stratified) random numbers: another sampled set */
+    o.progress = NULL; o.iterations = 0; o.gradients = g1; o.stratified = 0;
+    MFT_CHECK(mf_microsurface_generate_ex(&d, n, &o, b, NULL) == MF_SUCCESS, "generate: unstratified samples");
+    qsort(g1, (size_t)(2 * n * n), sizeof(mf_real), cmp_real);
+    perm = 1;
+    for (i = 0; i < 2 * n * n; ++i) if (g0[i] != g1[i]) perm = 0;
+    MFT_CHECK(!perm, "generate: unstratified samples differ from the stratified ones");
     free(a); free(b); free(c); free(g0); free(g1);
 }
 
@@ -415,7 +422,11 @@ static void test_gonio_exact(void)
     mf_gonio_config_default(&cfg);
     /* flat mirror: one bounce, all in the mirror direction's cell */
     cfg.wi = wi; cfg.rays = 20000;
+    g_calls = g_last = g_total = 0; g_order_ok = 1;
+    cfg.progress = progress;
     MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_SUCCESS, "gonio: flat mirror runs");
+    MFT_CHECK(g_calls == 100 && g_last == 20000 && g_total == 20000, "gonio: progress 100 times, ending at the ray count");
+    cfg.progress = NULL;
     c = mf_gonio_cell(&g, mf_vec3_make(MF_R(-0.6), MF_R(0.0), MF_R(0.8)));
     MFT_NEAR(g.first[c], 1.0, MFT_TOL(1e-12, 1e-6), 0.0, "gonio: flat mirror, everything in the mirror cell");
     MFT_NEAR(g.energy_multi, 0.0, 0.0, 0.0, "gonio: flat mirror, no second bounce");
