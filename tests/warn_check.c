@@ -88,6 +88,25 @@ int main(void)
     { /* Inverse Bin Map */
     }
     { /* microsurface generation, gonioreflectometer */
+        mf_real hm[8 * 8], gr[2 * 8 * 8], sw[8 * 8], mod[64], zl, zh, pl, ph;
+        mf_microsurface_options mo;
+        mf_microsurface_stats ms;
+        mf_gonio go;
+        mf_gonio_config gc;
+        mf_microsurface_options_default(&mo);
+        mo.iterations = 2; mo.gradients = gr; mo.schwarz = sw;
+        s += (mf_real)(mf_microsurface_generate(&k[0], 8, 1, 5u, hm) == MF_SUCCESS);
+        s += (mf_real)(mf_microsurface_generate_ex(&k[1], 8, &mo, hm, &ms) == MF_SUCCESS) + ms.below;
+        s += (mf_real)(mf_microsurface_integrate(gr, 8, hm) == MF_SUCCESS);
+        mf_gonio_config_default(&gc);
+        gc.rays = 100; gc.wi = wo;
+        if (mf_gonio_init(&go, 2) == MF_SUCCESS) {
+            s += (mf_real)(mf_gonio_measure(&go, hm, 8, &gc) == MF_SUCCESS) + go.energy_first;
+            if (go.cells <= 64) s += (mf_real)(mf_gonio_model(&go, &k[0], wo, 2, mod) == MF_SUCCESS);
+            mf_gonio_cell_bounds(&go, 1, &zl, &zh, &pl, &ph);
+            s += zl + zh + pl + ph + mf_gonio_cell_solid_angle(&go) + mf_gonio_cell_center(&go, mf_gonio_cell(&go, wo)).z;
+            mf_gonio_release(&go);
+        }
     }
     mf_frame(wo, &t, &b);
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
