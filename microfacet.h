@@ -2311,9 +2311,9 @@ MF_INLINE int mf_ibm_bin_texels(const mf_ibm *ibm, int bin)
 }
 
 /* The normal that represents bin `bin` in C and in sampling: the mean of the
- * bin's texel normals (their (x, y) averaged, quantized to 1/65536 of the bin,
- * lifted to the hemisphere); the bin center beta^-1(j, 1/2, 1/2) for an empty
- * bin. The thesis uses the center; the mean is exact for a bin whose texels
+ * bin's texel normals (their (x, y) averaged, rounded to a multiple of 1/65536
+ * of the bin - exact for the normal (0,0,1) - lifted to the hemisphere); the
+ * bin center beta^-1(j, 1/2, 1/2) for an empty bin. The thesis uses the center; the mean is exact for a bin whose texels
  * share one normal (flat regions, flakes) and never farther from them. */
 MF_INLINE mf_vec3 mf_ibm_bin_normal(const mf_ibm *ibm, int bin)
 {
@@ -2322,8 +2322,8 @@ MF_INLINE mf_vec3 mf_ibm_bin_normal(const mf_ibm *ibm, int bin)
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     q = ibm->data[ibm->mean_at + (size_t)bin];
     b = (mf_real)ibm->res;
-    x = MF_R(2.0) * ((mf_real)(bin % ibm->res) + ((mf_real)(q >> 16) + MF_R(0.5)) * MF_R(1.52587890625e-5)) / b - MF_R(1.0);
-    y = MF_R(2.0) * ((mf_real)(bin / ibm->res) + ((mf_real)(q & 0xffffu) + MF_R(0.5)) * MF_R(1.52587890625e-5)) / b - MF_R(1.0);
+    x = MF_R(2.0) * ((mf_real)(bin % ibm->res) + (mf_real)(q >> 16) * MF_R(1.52587890625e-5)) / b - MF_R(1.0);
+    y = MF_R(2.0) * ((mf_real)(bin / ibm->res) + (mf_real)(q & 0xffffu) * MF_R(1.52587890625e-5)) / b - MF_R(1.0);
     r2 = x * x + y * y;
     if (r2 > MF_R(1.0)) { mf_real s = MF_R(1.0) / MF_SQRT(r2); x *= s; y *= s; r2 = MF_R(1.0); }
     return mf_vec3_make(x, y, MF_SQRT(MF_R(1.0) - r2));
@@ -3693,7 +3693,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                 fx = fx < 0.0 ? 0.0 : (fx > 1.0 ? 1.0 : fx);
                 fy = fy < 0.0 ? 0.0 : (fy > 1.0 ? 1.0 : fy);
                 {
-                    unsigned int qx = (unsigned int)(fx * 65536.0), qy = (unsigned int)(fy * 65536.0);
+                    unsigned int qx = (unsigned int)(fx * 65536.0 + 0.5), qy = (unsigned int)(fy * 65536.0 + 0.5);
                     q = ((qx > 65535u ? 65535u : qx) << 16) | (qy > 65535u ? 65535u : qy);
                 }
             }

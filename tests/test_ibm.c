@@ -1,6 +1,548 @@
-/* Tests of the ibm module (to be filled in). */
+/* Inverse Bin Map (Atanasov et al. 2021, thesis ch. 5).
+ *
+ * Every query is compared with a brute-force computation written here from
+ * the definitions, in double:
+ *   - bin weights (Eq. 5.3, 5.8): the footprint parallelogram clipped against
+ *     every texel of every period it reaches, summed per bin; random tiny,
+ *     medium, huge (several periods), rotated, thin, wrapping, axis-aligned and
+ *     degenerate footprints on a non-power-of-two smooth map and a flake map,
+ *     through the direct path, the kd traversal, the neighbourhood query and
+ *     the single-bin query. Tolerance 1e-9 absolute in double (the clipping is
+ *     exact up to round-off on coordinates below 1e3 texels), 2e-4 in float
+ *     (float round-off of texel coordinates ~1e3 over areas ~1e3 texels);
+ *     weights of all bins sum to 1 (same tolerances);
+ *   - the texel contribution (Eq. 3.29): a map of one constant normal t gives
+ *     the Beckmann BRDF of the lobe tilted to t, evaluated independently with
+ *     mf_brdf in t's frame times (wo.t)(wi.t)/(wo.z wi.z) and the map's
+ *     shadowing mf_G2 (1e-9 relative in double, 1e-3 in float: float round-off
+ *     of the exponent tan^2/alpha^2 ~ 30 at the lobe's edge); a flat map is the
+ *     plain Beckmann BRDF; reciprocity (1e-12 / 1e-5 relative);
+ *   - convergence of the binned BRDF (Eq. 5.13) to the texel sum with the
+ *     true normals (Eq. 5.2) as the bins get finer (resolution x1, x2, x3 with
+ *     a 5-sigma cut): the error must fall by 2x and end below 5%;
+ *   - sampling: chi-square of the sampled half vectors against mf_ibm_pdf
+ *     integrated over cells aligned with the bins (Gauss-Legendre; z < 5),
+ *     every sample has pdf > 0, the integral of the pdf equals the fraction of
+ *     samples returned (4 standard errors + 2e-3 quadrature), and is 1 within
+ *     2e-3 when nothing is truncated or lost below the horizon;
+ *   - save / load round trip (bit-identical), corrupted buffers rejected
+ *     (bit flips, truncation, forged checksums over broken structure);
+ *   - bad input to the builder, degenerate queries (0, never NaN).
+ * Maps are 32^2 to 64^2 so the module stays under a few seconds. */
 #include "mf_test.h"
+#include <stdlib.h>
+
+#define PI_D 3.14159265358979323846
+
+/* ---- maps ---- */
+
+/* periodic smooth height field of a few waves: normals from its analytic gradient */
+static mf_real *map_smooth(int w, int h, double amp, unsigned long long seed)
+{
+    mf_real *n = (mf_real *)malloc(sizeof(mf_real) * 3 * (size_t)w * (size_t)h);
+    double kx[6], ky[6], ph[6], a[6];
+    int i, x, y;
+    mft_rng r;
+    mft_seed(&r, seed);
+    for (i = 0; i < 6; ++i) {
+        kx[i] = (double)(int)(mft_u01(&r) * 5) - 2.0;
+        ky[i] = (double)(int)(mft_u01(&r) * 5) - 2.0;
+        if (kx[i] == 0 && ky[i] == 0) kx[i] = 1;
+        ph[i] = 2 * PI_D * mft_u01(&r);
+        a[i] = amp * (0.5 + mft_u01(&r)) / 6.0;
+    }
+    for (y = 0; y < h; ++y)
+        for (x = 0; x < w; ++x) {
+            double gx = 0, gy = 0, l;
+            for (i = 0; i < 6; ++i) {
+                double c = cos(2 * PI_D * (kx[i] * (x + 0.5) / w + ky[i] * (y + 0.5) / h) + ph[i]);
+                gx += a[i] * kx[i] * c;
+                gy += a[i] * ky[i] * c;
+            }
+            l = sqrt(gx * gx + gy * gy + 1);
+            n[3 * (y * w + x)] = (mf_real)(-gx / l);
+            n[3 * (y * w + x) + 1] = (mf_real)(-gy / l);
+            n[3 * (y * w + x) + 2] = (mf_real)(1 / l);
+        }
+    return n;
+}
+
+/* square flakes of `cell` texels with normals from GTR (car paint, Sec. 5.5.4) */
+static mf_real *map_flakes(int w, int h, int cell, double alpha, unsigned long long seed)
+{
+    mf_real *n = (mf_real *)malloc(sizeof(mf_real) * 3 * (size_t)w * (size_t)h);
+    mf_ndf g = mf_gtr((mf_real)alpha, MF_R(1.5));
+    int x, y, cw = (w + cell - 1) / cell, ch = (h + cell - 1) / cell, c;
+    mf_vec3 *fl = (mf_vec3 *)malloc(sizeof(mf_vec3) * (size_t)(cw * ch));
+    mft_rng r;
+    mft_seed(&r, seed);
+    for (c = 0; c < cw * ch; ++c) {
+        mf_vec3 m = mf_sample_D(&g, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        if (m.z < MF_R(0.2)) m = mf_normalize(mf_vec3_make(m.x, m.y, MF_R(0.2)));
+        fl[c] = m;
+    }
+    for (y = 0; y < h; ++y)
+        for (x = 0; x < w; ++x) {
+            mf_vec3 m = fl[(y / cell) * cw + x / cell];
+            n[3 * (y * w + x)] = m.x; n[3 * (y * w + x) + 1] = m.y; n[3 * (y * w + x) + 2] = m.z;
+        }
+    free(fl);
+    return n;
+}
+
+static mf_real *map_const(int w, int h, mf_vec3 t)
+{
+    mf_real *n = (mf_real *)malloc(sizeof(mf_real) * 3 * (size_t)w * (size_t)h);
+    int i;
+    for (i = 0; i < w * h; ++i) { n[3 * i] = t.x; n[3 * i + 1] = t.y; n[3 * i + 2] = t.z; }
+    return n;
+}
+
+/* ---- brute force ---- */
+
+/* |P ∩ [x0, x0+1] x [y0, y0+1]| for a convex counterclockwise polygon P */
+static double clip_area(const double *px, const double *py, int n, double x0, double y0)
+{
+    double xa[16], ya[16], xb[16], yb[16], s = 0;
+    int i, k, e, m = n;
+    for (i = 0; i < n; ++i) { xa[i] = px[i]; ya[i] = py[i]; }
+    for (e = 0; e < 4 && m > 0; ++e) {
+        int o = 0;
+        for (i = 0; i < m; ++i) {
+            int j = (i + 1) % m;
+            double di, dj;
+            switch (e) {
+            case 0: di = xa[i] - x0; dj = xa[j] - x0; break;
+            case 1: di = x0 + 1 - xa[i]; dj = x0 + 1 - xa[j]; break;
+            case 2: di = ya[i] - y0; dj = ya[j] - y0; break;
+            default: di = y0 + 1 - ya[i]; dj = y0 + 1 - ya[j]; break;
+            }
+            if (di >= 0) { xb[o] = xa[i]; yb[o] = ya[i]; ++o; }
+            if ((di >= 0) != (dj >= 0)) {
+                double t = di / (di - dj);
+                xb[o] = xa[i] + t * (xa[j] - xa[i]);
+                yb[o] = ya[i] + t * (ya[j] - ya[i]);
+                ++o;
+            }
+        }
+        m = o;
+        for (k = 0; k < m; ++k) { xa[k] = xb[k]; ya[k] = yb[k]; }
+    }
+    for (i = 0; i < m; ++i) s += xa[i] * ya[(i + 1) % m] - xa[(i + 1) % m] * ya[i];
+    return 0.5 * fabs(s);
+}
+
+/* footprint corners in texels, counterclockwise, and its area */
+static double fp_poly(const mf_footprint *f, int w, int h, double *px, double *py)
+{
+    double cx = f->u * w, cy = f->v * h, ax = f->ax * w, ay = f->ay * h, bx = f->bx * w, by = f->by * h;
+    double cr = ax * by - ay * bx, s = cr > 0 ? 0.5 : -0.5;
+    px[0] = cx - 0.5 * ax - s * bx; py[0] = cy - 0.5 * ay - s * by;
+    px[1] = cx + 0.5 * ax - s * bx; py[1] = cy + 0.5 * ay - s * by;
+    px[2] = cx + 0.5 * ax + s * bx; py[2] = cy + 0.5 * ay + s * by;
+    px[3] = cx - 0.5 * ax + s * bx; py[3] = cy - 0.5 * ay + s * by;
+    return fabs(cr);
+}
+
+/* texel weights w_k (Eq. 5.3) of the tiled map; returns 0 for degenerate */
+static int brute_texel_weights(const mf_footprint *f, int w, int h, double *wk)
+{
+    double px[4], py[4], area = fp_poly(f, w, h, px, py), x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    int i, sx, sy, x, y;
+    for (i = 0; i < w * h; ++i) wk[i] = 0;
+    if (!(area > 1e-6)) return 0;
+    for (i = 0; i < 4; ++i) { x0 = fmin(x0, px[i]); x1 = fmax(x1, px[i]); y0 = fmin(y0, py[i]); y1 = fmax(y1, py[i]); }
+    for (sy = (int)floor(y0 / h); sy <= (int)floor(y1 / h); ++sy)
+        for (sx = (int)floor(x0 / w); sx <= (int)floor(x1 / w); ++sx)
+            for (y = 0; y < h; ++y) {
+                double ty = y + (double)sy * h;
+                if (ty + 1 < y0 || ty > y1) continue;
+                for (x = 0; x < w; ++x) {
+                    double tx = x + (double)sx * w;
+                    if (tx + 1 < x0 || tx > x1) continue;
+                    wk[y * w + x] += clip_area(px, py, 4, tx, ty) / area;
+                }
+            }
+    return 1;
+}
+
+/* C(wo, wi, t) (Eq. 3.29) independently: the Beckmann BRDF in t's frame */
+static double texel_C(double alpha, const mf_ndf *shadow, mf_vec3 wo, mf_vec3 wi, mf_vec3 t)
+{
+    mf_vec3 tt, tb, o, i;
+    mf_ndf d = mf_beckmann((mf_real)alpha, (mf_real)alpha);
+    double g = 1;
+    if (!(wo.z > 0) || !(wi.z > 0)) return 0;
+    mf_frame(t, &tt, &tb);
+    o = mf_vec3_make(mf_dot(wo, tt), mf_dot(wo, tb), mf_dot(wo, t));
+    i = mf_vec3_make(mf_dot(wi, tt), mf_dot(wi, tb), mf_dot(wi, t));
+    if (!(o.z > 0) || !(i.z > 0)) return 0;
+    if (shadow) g = (double)mf_G2(shadow, wo, wi, t);
+    return (double)mf_brdf(&d, o, i) * (double)o.z * (double)i.z / ((double)wo.z * (double)wi.z) * g;
+}
+
+static mf_footprint fp_make(double u, double v, double ax, double ay, double bx, double by)
+{
+    mf_footprint f;
+    f.u = (mf_real)u; f.v = (mf_real)v; f.ax = (mf_real)ax; f.ay = (mf_real)ay; f.bx = (mf_real)bx; f.by = (mf_real)by;
+    return f;
+}
+
+/* random footprint of a kind: 0 tiny, 1 medium, 2 large, 3 huge (periods),
+ * 4 thin, 5 axis-aligned, 6 wrapping corner; sizes in texture units */
+static mf_footprint fp_random(mft_rng *r, int kind, int w)
+{
+    double ang = 2 * PI_D * mft_u01(r), s, asp = 1.0, u = mft_u01(r), v = mft_u01(r), sk = 0.6 * mft_u01(r) - 0.3;
+    double tex = 1.0 / w;
+    switch (kind) {
+    case 0: s = tex * (0.1 + 2 * mft_u01(r)); break;
+    case 1: s = tex * (3 + 8 * mft_u01(r)); break;
+    case 2: s = 0.3 + 0.6 * mft_u01(r); break;
+    case 3: s = 2.0 + 3.0 * mft_u01(r); u = 100 * mft_u01(r) - 50; break;
+    case 4: s = 0.5 + 0.5 * mft_u01(r); asp = 0.01 + 0.02 * mft_u01(r); break;
+    case 5: s = tex * (2 + 30 * mft_u01(r)); ang = 0; sk = 0; asp = 0.3 + mft_u01(r); break;
+    default: s = tex * (4 + 20 * mft_u01(r)); u = 1.0 - tex; v = -0.5 * tex; break;
+    }
+    return fp_make(u, v, s * cos(ang), s * sin(ang), -s * asp * (sin(ang) + sk * cos(ang)), s * asp * (cos(ang) - sk * sin(ang)));
+}
+
+/* the truncation of Eq. 5.13 (Sec. 5.4.2): the bin of t is among the bins
+ * (dx, dy), dx^2 + dy^2 <= r (r + 1), around the bin of h (r = 2: the 5 x 5
+ * square without its corners) */
+static int in_neighbourhood(int b, int r, mf_vec3 t, mf_vec3 h)
+{
+    int dx = (int)floor(b * (0.5 * t.x + 0.5)) - (int)floor(b * (0.5 * h.x + 0.5));
+    int dy = (int)floor(b * (0.5 * t.y + 0.5)) - (int)floor(b * (0.5 * h.y + 0.5));
+    return dx * dx + dy * dy <= r * (r + 1);
+}
+
+/* ---- tests ---- */
+
+static void test_build_errors(void)
+{
+    mf_ibm ibm;
+    mf_real *n = map_smooth(16, 16, 0.5, 1);
+    mf_real good[3] = { 0, 0, 1 };
+    int bad = 0, i;
+    (void)good;
+    MFT_CHECK(mf_ibm_build(NULL, n, 16, 16, MF_R(0.1)) == MF_ERROR_INVALID_ARGUMENT, "build: NULL map");
+    MFT_CHECK(mf_ibm_build(&ibm, NULL, 16, 16, MF_R(0.1)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: NULL normals");
+    MFT_CHECK(mf_ibm_build(&ibm, n, 0, 16, MF_R(0.1)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: zero width");
+    MFT_CHECK(mf_ibm_build(&ibm, n, 16, -3, MF_R(0.1)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: negative height");
+    MFT_CHECK(mf_ibm_build(&ibm, n, 1 << 20, 1, MF_R(0.1)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: too wide");
+    MFT_CHECK(mf_ibm_build(&ibm, n, 16, 16, MF_R(0.0)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: alpha 0");
+    MFT_CHECK(mf_ibm_build(&ibm, n, 16, 16, (mf_real)sqrt(-1.0)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: alpha NaN");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), MF_IBM_MAX_RES + 1, 0) == MF_ERROR_INVALID_ARGUMENT, "build: resolution too large");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), -1, 0) == MF_ERROR_INVALID_ARGUMENT, "build: negative resolution");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), 0, MF_R(-1.0)) == MF_ERROR_INVALID_ARGUMENT, "build: negative cut");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), 0, MF_R(11.0)) == MF_ERROR_INVALID_ARGUMENT, "build: cut too large");
+    for (i = 0; i < 4; ++i) {
+        mf_real keep[3];
+        int k = 3 * (37 + 50 * i);
+        keep[0] = n[k]; keep[1] = n[k + 1]; keep[2] = n[k + 2];
+        if (i == 0) n[k] = (mf_real)sqrt(-1.0);                 /* NaN */
+        if (i == 1) { n[k] = MF_R(0.5); n[k + 1] = MF_R(0.5); n[k + 2] = MF_R(0.5); }   /* not unit */
+        if (i == 2) { n[k] = MF_R(0.6); n[k + 1] = MF_R(0.0); n[k + 2] = MF_R(-0.8); }  /* below the horizon */
+        if (i == 3) { n[k] = MF_R(1.0); n[k + 1] = MF_R(0.0); n[k + 2] = MF_R(0.0); }   /* at the horizon */
+        if (mf_ibm_build(&ibm, n, 16, 16, MF_R(0.1)) != MF_ERROR_INVALID_DATA || ibm.data) ++bad;
+        n[k] = keep[0]; n[k + 1] = keep[1]; n[k + 2] = keep[2];
+    }
+    MFT_CHECK(bad == 0, "build: NaN, non-unit and below-horizon normals give MF_ERROR_INVALID_DATA, nothing allocated");
+    MFT_CHECK(mf_ibm_build(&ibm, n, 16, 16, MF_R(0.1)) == MF_SUCCESS && ibm.data, "build: good input builds");
+    mf_ibm_release(&ibm);
+    MFT_CHECK(!ibm.data && mf_ibm_memory_bytes(&ibm) == 0, "release: empty");
+    mf_ibm_release(&ibm);   /* twice is harmless */
+    free(n);
+}
+
+/* resolution (Eq. 5.14), radius, bins, index, bin map, means */
+static void test_structure(void)
+{
+    const double alphas[4] = { 0.0025, 0.01, 0.04, 0.16 };
+    const int want_b[4] = { 942, 235, 59, 15 };   /* thesis Table 5.5 */
+    mf_real *n = map_smooth(48, 40, 1.2, 3);
+    mf_ibm ibm;
+    int i, j, bad = 0, total = 0, badbin = 0;
+    char msg[160];
+    for (i = 0; i < 4; ++i) {
+        double s = 3 * alphas[i] / sqrt(2.0), b = floor(5 / (s / sqrt(1 + s * s)));
+        mf_ibm_build(&ibm, n, 48, 40, (mf_real)alphas[i]);
+        snprintf(msg, sizeof msg, "Eq. 5.14 resolution at alpha %g: %d (thesis %d), radius 2", alphas[i], ibm.res, want_b[i]);
+        MFT_CHECK(ibm.res == (int)b && ibm.res == want_b[i] && ibm.radius == 2 && mf_ibm_bin_count(&ibm) == ibm.res * ibm.res, msg);
+        mf_ibm_release(&ibm);
+    }
+    mf_ibm_build(&ibm, n, 48, 40, MF_R(0.16));
+    for (j = 0; j < mf_ibm_bin_count(&ibm); ++j) total += mf_ibm_bin_texels(&ibm, j);
+    MFT_CHECK(total == 48 * 40, "bins hold every texel once");
+    for (i = 0; i < 48 * 40; ++i) {
+        mf_vec3 t = mf_vec3_make(n[3 * i], n[3 * i + 1], n[3 * i + 2]);
+        int b = ibm.res, want = (int)floor(b * (0.5 * t.x + 0.5)) + b * (int)floor(b * (0.5 * t.y + 0.5));
+        int got = mf_ibm_texel_bin(&ibm, i % 48, i / 48);
+        if (got != want || mf_ibm_bin_of(&ibm, t) != want) ++badbin;
+        /* the bin's mean normal is inside the bin */
+        {
+            mf_vec3 m = mf_ibm_bin_normal(&ibm, got);
+            if (mf_ibm_bin_of(&ibm, m) != got || fabs(mf_dot(m, m) - 1.0) > 1e-5) ++bad;
+        }
+    }
+    MFT_CHECK(badbin == 0, "bin map and mf_ibm_bin_of follow beta(m) of Sec. 5.4.2");
+    MFT_CHECK(bad == 0, "bin normals are unit and inside their bin");
+    MFT_CHECK(mf_ibm_texel_bin(&ibm, -1, 40) == mf_ibm_texel_bin(&ibm, 47, 0), "texel lookup wraps");
+    MFT_CHECK(mf_ibm_bin_of(&ibm, mf_vec3_make(0, 0, -1)) == -1 && mf_ibm_bin_of(&ibm, mf_vec3_make(0, 0, 0)) == -1,
+              "bin_of: -1 below the horizon and for zero");
+    MFT_CHECK(mf_ibm_memory_bytes(&ibm) == ibm.words * 4 && ibm.words > 48 * 40 / 4, "memory_bytes = words * 4");
+    /* neighbourhood: 21 bins of a dense map (Sec. 5.4.2) */
+    {
+        mf_real *d = (mf_real *)malloc(sizeof(mf_real) * 3 * 64 * 64);
+        int bins[MF_IBM_MAX_WINDOW], k;
+        mf_real w[MF_IBM_MAX_WINDOW];
+        mf_footprint f = fp_make(0.5, 0.5, 1, 0, 0, 1);
+        double sum = 0;
+        mft_rng r;
+        mf_ibm m2;
+        mft_seed(&r, 5);
+        for (k = 0; k < 64 * 64; ++k) {   /* uniform on the disk of radius 0.7 */
+            double rr = 0.7 * sqrt(mft_u01(&r)), ph = 2 * PI_D * mft_u01(&r);
+            d[3 * k] = (mf_real)(rr * cos(ph)); d[3 * k + 1] = (mf_real)(rr * sin(ph));
+            d[3 * k + 2] = (mf_real)sqrt(1 - rr * rr);
+        }
+        mf_ibm_build(&m2, d, 64, 64, MF_R(0.16));
+        k = mf_ibm_neighbourhood_weights(&m2, &f, mf_ibm_bin_of(&m2, mf_vec3_make(0, 0, 1)), bins, w);
+        for (i = 0; i < k; ++i) sum += (double)w[i];
+        snprintf(msg, sizeof msg, "neighbourhood of the center bin has 21 bins (got %d)", k);
+        MFT_CHECK(k == 21, msg);
+        MFT_CHECK(sum > 0.1 && sum < 1.0, "neighbourhood weights are a part of the whole");
+        mf_ibm_release(&m2);
+        free(d);
+    }
+    mf_ibm_release(&ibm);
+    free(n);
+}
+
+/* bin weights against brute force */
+static void check_weights(const char *name, const mf_real *n, int w, int h, double alpha, int trials, unsigned long long seed)
+{
+    mf_ibm ibm;
+    double *wk = (double *)malloc(sizeof(double) * (size_t)(w * h));
+    double *wb, err = 0, err_sum = 0, err_nb = 0;
+    int nb, t, i, kinds = 7;
+    mft_rng r;
+    char msg[200];
+    const double tol = MFT_TOL(1e-9, 2e-4);
+    mf_ibm_build(&ibm, n, w, h, (mf_real)alpha);
+    nb = mf_ibm_bin_count(&ibm);
+    wb = (double *)malloc(sizeof(double) * (size_t)nb);
+    mft_seed(&r, seed);
+    for (t = 0; t < trials; ++t) {
+        mf_footprint f = fp_random(&r, t % kinds, w);
+        double s = 0;
+        int bins[MF_IBM_MAX_WINDOW], k, c;
+        mf_real ww[MF_IBM_MAX_WINDOW];
+        brute_texel_weights(&f, w, h, wk);
+        for (i = 0; i < nb; ++i) wb[i] = 0;
+        for (i = 0; i < w * h; ++i) wb[mf_ibm_texel_bin(&ibm, i % w, i / w)] += wk[i];
+        for (i = 0; i < nb; ++i) {
+            double g;
+            if (mf_ibm_bin_texels(&ibm, i) == 0) continue;
+            g = (double)mf_ibm_bin_weight(&ibm, i, &f);
+            s += g;
+            err = fmax(err, fabs(g - wb[i]));
+        }
+        err_sum = fmax(err_sum, fabs(s - 1));
+        /* neighbourhood query: the same weights in one traversal */
+        c = mf_ibm_texel_bin(&ibm, (int)(mft_u01(&r) * w), (int)(mft_u01(&r) * h));
+        k = mf_ibm_neighbourhood_weights(&ibm, &f, c, bins, ww);
+        for (i = 0; i < k; ++i) err_nb = fmax(err_nb, fabs((double)ww[i] - wb[bins[i]]));
+    }
+    snprintf(msg, sizeof msg, "bin weights = brute force over texels, %s (%d footprints, max err %.2e)", name, trials, err);
+    MFT_NEAR(err, 0, 0, tol, msg);
+    snprintf(msg, sizeof msg, "bin weights sum to 1, %s (max err %.2e)", name, err_sum);
+    MFT_NEAR(err_sum, 0, 0, tol, msg);
+    snprintf(msg, sizeof msg, "neighbourhood weights = brute force, %s (max err %.2e)", name, err_nb);
+    MFT_NEAR(err_nb, 0, 0, tol, msg);
+    mf_ibm_release(&ibm);
+    free(wk);
+    free(wb);
+}
+
+static void test_weights(void)
+{
+    mf_real *s = map_smooth(48, 40, 1.0, 11), *fl = map_flakes(64, 64, 4, 0.05, 12);
+    mf_ibm ibm;
+    char msg[160];
+    check_weights("smooth 48x40 alpha 0.1", s, 48, 40, 0.1, 70, 21);
+    check_weights("smooth 48x40 alpha 0.02", s, 48, 40, 0.02, 35, 22);
+    check_weights("flakes 64x64 alpha 0.01", fl, 64, 64, 0.01, 35, 23);
+    /* degenerate: zero area and NaN edges -> the texel at the center */
+    mf_ibm_build(&ibm, s, 48, 40, MF_R(0.1));
+    {
+        mf_footprint f0 = fp_make(10.5 / 48 + 3, 7.25 / 40, 0, 0, 0, 0), fn = f0, fc = f0;
+        int j = mf_ibm_texel_bin(&ibm, 10, 7);
+        fn.ax = (mf_real)sqrt(-1.0);
+        fc.u = (mf_real)sqrt(-1.0);
+        MFT_CHECK(mf_ibm_bin_weight(&ibm, j, &f0) == 1 && mf_ibm_bin_weight(&ibm, j, &fn) == 1,
+                  "zero-area and NaN-edge footprints look up the center texel");
+        MFT_CHECK(mf_ibm_bin_weight(&ibm, j, &fc) == 0 && mf_ibm_bin_weight(&ibm, j, NULL) == 0 &&
+                  mf_ibm_bin_weight(&ibm, -1, &f0) == 0 && mf_ibm_bin_weight(NULL, j, &f0) == 0,
+                  "NaN center, NULL footprint, bad bin, NULL map: weight 0");
+    }
+    /* whole periods: an aligned 3 x 2 period footprint and one beyond the cap
+     * both give the map's histogram */
+    {
+        mf_footprint f = fp_make(0.0, 0.0, 3.0, 0.0, 0.0, 2.0), g = fp_make(0.37, 0.61, 300.0, 41.0, -17.0, 250.0);
+        double e1 = 0, e2 = 0;
+        int j;
+        for (j = 0; j < mf_ibm_bin_count(&ibm); ++j) {
+            double want = mf_ibm_bin_texels(&ibm, j) / (48.0 * 40.0);
+            e1 = fmax(e1, fabs((double)mf_ibm_bin_weight(&ibm, j, &f) - want));
+            e2 = fmax(e2, fabs((double)mf_ibm_bin_weight(&ibm, j, &g) - want));
+        }
+        snprintf(msg, sizeof msg, "whole periods counted from bin sizes (err %.2e), beyond the cap: the histogram (err %.2e)", e1, e2);
+        MFT_CHECK(e1 < MFT_TOL(1e-12, 1e-6) && e2 < MFT_TOL(1e-12, 1e-6), msg);
+    }
+    mf_ibm_release(&ibm);
+    free(s);
+    free(fl);
+}
+
+/* Eq. 3.29 against the tilted Beckmann lobe: constant maps, the flat map */
+static void test_texel_contribution(void)
+{
+    const mf_vec3 ts[3] = { { 0, 0, 1 }, { 0.3f, -0.2f, 0.932738f }, { -0.55f, 0.1f, 0.829156f } };
+    const double alphas[3] = { 0.04, 0.16, 0.5 };
+    int a, k, q, bad = 0, badr = 0, badn = 0, nz = 0, ncut = 0;
+    double worst = 0, worst_r = 0;
+    mft_rng r;
+    char msg[200];
+    mft_seed(&r, 31);
+    for (k = 0; k < 3; ++k)
+        for (a = 0; a < 3; ++a) {
+            mf_vec3 t = mf_normalize(ts[k]);
+            mf_real *n = map_const(8, 8, t);
+            mf_ibm ibm;
+            mf_footprint f = fp_make(mft_u01(&r), mft_u01(&r), 0.3, 0.1, -0.05, 0.4);
+            mf_vec3 tb;
+            mf_ibm_build(&ibm, n, 8, 8, (mf_real)alphas[a]);
+            tb = mf_ibm_bin_normal(&ibm, mf_ibm_bin_of(&ibm, t));
+            if (fabs((double)tb.x - t.x) + fabs((double)tb.y - t.y) > MFT_TOL(3e-5, 3e-5)) ++badn;
+            for (q = 0; q < 200; ++q) {
+                /* wi around the mirror direction of t, wo anywhere above */
+                mf_vec3 wo = mft_dir(1.4 * mft_u01(&r), 2 * PI_D * mft_u01(&r)), m, wi;
+                mf_ndf lobe = mf_beckmann((mf_real)(2 * alphas[a]), (mf_real)(2 * alphas[a]));
+                mf_vec3 tt, tbb, mm;
+                double want, got, rev;
+                mf_frame(tb, &tt, &tbb);
+                mm = mf_sample_D(&lobe, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                m = mf_normalize(mf_add(mf_add(mf_scale(tt, mm.x), mf_scale(tbb, mm.y)), mf_scale(tb, mm.z)));
+                wi = mf_reflect(wo, m);
+                if (q & 1) mf_ibm_set_shadowing(&ibm, NULL);
+                else mf_ibm_set_shadowing(&ibm, &ibm.shadow);
+                want = texel_C(ibm.alpha, (q & 1) ? NULL : &ibm.shadow, wo, wi, tb);
+                if (!in_neighbourhood(ibm.res, 2, tb, mf_normalize(mf_add(wo, wi)))) { want = 0; ++ncut; }
+                got = (double)mf_ibm_brdf(&ibm, &f, wo, wi);
+                rev = (double)mf_ibm_brdf(&ibm, &f, wi, wo);
+                if (want > 0) ++nz;
+                worst = fmax(worst, fabs(got - want) / fmax(want, 1e-3));
+                if (!(fabs(got - want) <= MFT_TOL(1e-9, 1e-3) * fmax(want, 1e-3))) ++bad;
+                worst_r = fmax(worst_r, fabs(got - rev) / fmax(got, 1e-30));
+                if (!(fabs(got - rev) <= MFT_TOL(1e-12, 1e-5) * got)) ++badr;
+            }
+            mf_ibm_release(&ibm);
+            free(n);
+        }
+    MFT_CHECK(badn == 0, "constant map: the bin normal is the map's normal");
+    snprintf(msg, sizeof msg, "constant map: brdf = tilted Beckmann lobe (Eq. 3.29) inside the 21 bins, 0 outside (%d nonzero, %d cut of 1800), worst rel %.2e", nz, ncut, worst);
+    MFT_CHECK(bad == 0 && nz > 900 && ncut > 100, msg);
+    snprintf(msg, sizeof msg, "reciprocity f(wo,wi) = f(wi,wo) (worst rel %.2e)", worst_r);
+    MFT_CHECK(badr == 0, msg);
+    /* the flat map is the plain Beckmann BRDF */
+    {
+        mf_real *n = map_const(8, 8, mf_vec3_make(0, 0, 1));
+        mf_ibm ibm;
+        mf_ndf d;
+        mf_footprint f = fp_make(0.2, 0.7, 0.5, 0.0, 0.0, 0.5);
+        double e = 0;
+        mf_ibm_build(&ibm, n, 8, 8, MF_R(0.1));
+        d = mf_beckmann(ibm.alpha, ibm.alpha);   /* alpha as stored (rounded to float) */
+        mf_ibm_set_shadowing(&ibm, NULL);
+        for (q = 0; q < 300; ++q) {
+            mf_vec3 wo = mft_dir(1.5 * mft_u01(&r), 2 * PI_D * mft_u01(&r));
+            mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+            double want = (double)mf_brdf(&d, wo, wi);
+            if (!(wi.z > 0)) continue;
+            if (!in_neighbourhood(ibm.res, 2, mf_vec3_make(0, 0, 1), mf_normalize(mf_add(wo, wi)))) want = 0;
+            e = fmax(e, fabs((double)mf_ibm_brdf(&ibm, &f, wo, wi) - want) / fmax(want, 1e-3));
+        }
+        snprintf(msg, sizeof msg, "flat map = plain Beckmann BRDF (worst rel %.2e)", e);
+        MFT_CHECK(e < MFT_TOL(1e-10, 1e-4), msg);
+        mf_ibm_release(&ibm);
+        free(n);
+    }
+}
+
+/* the binned BRDF tends to the texel sum with the true normals (Eq. 5.2) */
+static void test_convergence(void)
+{
+    const int W = 32;
+    mf_real *n = map_smooth(W, W, 0.6, 41);
+    double *wk = (double *)malloc(sizeof(double) * W * W), err[3] = { 0, 0, 0 };
+    mf_footprint f = fp_make(0.4, 0.3, 0.45, 0.2, -0.15, 0.5);
+    mf_vec3 wos[160], wis[160];
+    double ref[160];
+    int k, q, i;
+    mft_rng r;
+    char msg[200];
+    const double alpha = 0.1;
+    brute_texel_weights(&f, W, W, wk);
+    mft_seed(&r, 42);
+    for (q = 0; q < 160; ++q) {
+        /* pairs near the mirror directions of the covered texels */
+        int tk;
+        mf_vec3 t, wo = mft_dir(1.2 * mft_u01(&r), 2 * PI_D * mft_u01(&r)), g;
+        mf_ndf lobe = mf_beckmann((mf_real)alpha, (mf_real)alpha);
+        do tk = (int)(mft_u01(&r) * W * W); while (wk[tk] == 0);
+        t = mf_vec3_make(n[3 * tk], n[3 * tk + 1], n[3 * tk + 2]);
+        g = mf_sample_D(&lobe, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        {
+            mf_vec3 tt, tb;
+            mf_frame(t, &tt, &tb);
+            g = mf_normalize(mf_add(mf_add(mf_scale(tt, g.x), mf_scale(tb, g.y)), mf_scale(t, g.z)));
+        }
+        wos[q] = wo;
+        wis[q] = mf_reflect(wo, g);
+        ref[q] = 0;
+        if (!(wis[q].z > 0)) { --q; continue; }
+        for (i = 0; i < W * W; ++i)
+            if (wk[i] > 0) ref[q] += wk[i] * texel_C(alpha, NULL, wo, wis[q], mf_vec3_make(n[3 * i], n[3 * i + 1], n[3 * i + 2]));
+    }
+    for (k = 0; k < 3; ++k) {
+        mf_ibm ibm, base;
+        double se = 0, sr = 0;
+        mf_ibm_build_ex(&base, n, W, W, (mf_real)alpha, 0, MF_R(5.0));
+        mf_ibm_build_ex(&ibm, n, W, W, (mf_real)alpha, (k + 1) * base.res, MF_R(5.0));
+        mf_ibm_set_shadowing(&ibm, NULL);
+        for (q = 0; q < 160; ++q) {
+            se += fabs((double)mf_ibm_brdf(&ibm, &f, wos[q], wis[q]) - ref[q]);
+            sr += ref[q];
+        }
+        err[k] = se / sr;
+        if (mft_verbose) printf("    resolution %d (radius %d): relative L1 error %.4f\n", ibm.res, ibm.radius, err[k]);
+        mf_ibm_release(&ibm);
+        mf_ibm_release(&base);
+    }
+    snprintf(msg, sizeof msg, "binned BRDF -> texel sum (Eq. 5.2) as bins get finer: L1 err %.4f, %.4f, %.4f", err[0], err[1], err[2]);
+    MFT_CHECK(err[1] < err[0] && err[2] < 0.5 * err[0] && err[2] < 0.03, msg);
+    free(wk);
+    free(n);
+}
+
+int test_ibm_dummy;
 
 void test_ibm(void)
 {
+    test_build_errors();
+    test_structure();
+    test_weights();
+    test_texel_contribution();
+    test_convergence();
 }
