@@ -2540,8 +2540,19 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
     if (pc->bx1 > ibm->width) pc->bx1 = ibm->width;
     if (pc->by1 > ibm->height) pc->by1 = ibm->height;
     if (pc->bx1 <= pc->bx0 || pc->by1 <= pc->by0) return 0;
-    for (i = 0; i < m; ++i) { pc->x[i] -= (mf_real)pc->ox; pc->y[i] -= (mf_real)pc->oy; }
-    if (!(mf__ibm_shoelace(pc->x, pc->y, m) > MF_R(0.0))) return 0;
+    /* relative coordinates, without repeated vertices (clipping a corner that
+     * lies on a period edge repeats it; a zero-length edge has no half-plane) */
+    {
+        int k = 0;
+        for (i = 0; i < m; ++i) {
+            mf_real vx = pc->x[i] - (mf_real)pc->ox, vy = pc->y[i] - (mf_real)pc->oy;
+            if (k > 0 && vx == pc->x[k - 1] && vy == pc->y[k - 1]) continue;
+            pc->x[k] = vx; pc->y[k] = vy; ++k;
+        }
+        while (k > 1 && pc->x[k - 1] == pc->x[0] && pc->y[k - 1] == pc->y[0]) --k;
+        m = k;
+    }
+    if (m < 3 || !(mf__ibm_shoelace(pc->x, pc->y, m) > MF_R(0.0))) return 0;
     pc->n = m;
     pc->rect = p->rect;
     pc->rx0 = lx - (mf_real)pc->ox; pc->rx1 = hx - (mf_real)pc->ox;
@@ -2551,7 +2562,7 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
         if (l > MF_R(0.0)) { a /= l; b /= l; }
         pc->ea[i] = a; pc->eb[i] = b;
-        pc->ec[i] = -(a * pc->x[i] + b * pc->y[i]);
+        pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
     return 1;
 }

@@ -216,6 +216,23 @@ static int in_neighbourhood(int b, int r, mf_vec3 t, mf_vec3 h)
     return dx * dx + dy * dy <= r * (r + 1);
 }
 
+/* footprints whose corners or edges lie exactly on texel and period edges */
+#define NFIXED 8
+static mf_footprint fixed_fp(int i, int w, int h)
+{
+    double tx = 1.0 / w, ty = 1.0 / h;
+    switch (i) {
+    case 0: return fp_make(0.25, 0.5, 1.5, 0.0, 0.0, 0.5);                 /* ends on the period edge */
+    case 1: return fp_make(0.5 * tx, 0.5 * ty, tx, 0.0, 0.0, ty);          /* exactly texel (0, 0) */
+    case 2: return fp_make(0.0, 0.0, 4 * tx, 0.0, 0.0, 6 * ty);            /* texel-aligned, wraps */
+    case 3: return fp_make(0.5, 0.5, 0.3, 0.3, -0.3, 0.3);                 /* corners on texel corners */
+    case 4: return fp_make(0.3, 0.6, 0.4, 0.1, -0.2, 0.3);                 /* a corner on x = 0 */
+    case 5: return fp_make(0.5, 0.25, 1.0, 0.0, 0.0, 0.5);                 /* one period wide */
+    case 6: return fp_make(0.1, 0.9, 2.0, 1.0, -1.0, 2.0);                 /* corners on period corners */
+    default: return fp_make(0.5, 0.5, 0.5, 0.0, 0.0, 1e-3 * ty);          /* a thin strip */
+    }
+}
+
 /* ---- tests ---- */
 
 static void test_build_errors(void)
@@ -333,8 +350,8 @@ static void check_weights(const char *name, const mf_real *n, int w, int h, doub
     nb = mf_ibm_bin_count(&ibm);
     wb = (double *)malloc(sizeof(double) * (size_t)nb);
     mft_seed(&r, seed);
-    for (t = 0; t < trials; ++t) {
-        mf_footprint f = fp_random(&r, t % kinds, w);
+    for (t = 0; t < trials + NFIXED; ++t) {
+        mf_footprint f = t < NFIXED ? fixed_fp(t, w, h) : fp_random(&r, t % kinds, w);
         double s = 0;
         int bins[MF_IBM_MAX_WINDOW], k, c;
         mf_real ww[MF_IBM_MAX_WINDOW];
@@ -354,7 +371,7 @@ static void check_weights(const char *name, const mf_real *n, int w, int h, doub
         k = mf_ibm_neighbourhood_weights(&ibm, &f, c, bins, ww);
         for (i = 0; i < k; ++i) err_nb = fmax(err_nb, fabs((double)ww[i] - wb[bins[i]]));
     }
-    snprintf(msg, sizeof msg, "bin weights = brute force over texels, %s (%d footprints, max err %.2e)", name, trials, err);
+    snprintf(msg, sizeof msg, "bin weights = brute force over texels, %s (%d footprints, max err %.2e)", name, trials + NFIXED, err);
     MFT_NEAR(err, 0, 0, tol, msg);
     snprintf(msg, sizeof msg, "bin weights sum to 1, %s (max err %.2e)", name, err_sum);
     MFT_NEAR(err_sum, 0, 0, tol, msg);
@@ -536,6 +553,113 @@ static void test_convergence(void)
     free(n);
 }
 
+/* probability of each half-vector cell (the bins split sub x sub) under
+ * mf_ibm_pdf: the integral over the cell of pdf(wi(h)) 4 (wo.h) / h.z dhx dhy,
+ * 4 x 4 Gauss-Legendre nodes; returns the total */
+static double pdf_cells(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, int sub, double *prob)
+{
+    double gx[4], gw[4], tot = 0;
+    int nc = ibm->res * sub, cx, cy, i, j;
+    mft_gl(4, gx, gw);
+    for (cy = 0; cy < nc; ++cy)
+        for (cx = 0; cx < nc; ++cx) {
+            double x0 = -1 + 2.0 * cx / nc, y0 = -1 + 2.0 * cy / nc, d = 2.0 / nc, p = 0;
+            double nx = fmin(fabs(x0), fabs(x0 + d)), ny = fmin(fabs(y0), fabs(y0 + d));
+            if (x0 < 0 && x0 + d > 0) nx = 0;
+            if (y0 < 0 && y0 + d > 0) ny = 0;
+            if (nx * nx + ny * ny < 1)
+                for (i = 0; i < 4; ++i)
+                    for (j = 0; j < 4; ++j) {
+                        double hx = x0 + d * gx[i], hy = y0 + d * gx[j], r2 = hx * hx + hy * hy, hz, c;
+                        mf_vec3 h, wi;
+                        if (r2 >= 1) continue;
+                        hz = sqrt(1 - r2);
+                        h = mf_vec3_make((mf_real)hx, (mf_real)hy, (mf_real)hz);
+                        c = (double)mf_dot(wo, h);
+                        if (c <= 0) continue;
+                        wi = mf_normalize(mf_reflect(wo, h));
+                        if (!(wi.z > 0)) continue;
+                        p += gw[i] * gw[j] * d * d * (double)mf_ibm_pdf(ibm, f, wo, wi) * 4 * c / hz;
+                    }
+            prob[cy * nc + cx] = p;
+            tot += p;
+        }
+    return tot;
+}
+
+/* sampling against the pdf: chi-square, pdf > 0 on samples, eval/pdf in one
+ * call, and the integral of the pdf against the fraction of samples */
+static void check_sampling(const char *name, const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, int n, int sub,
+                           double want_norm, unsigned long long seed)
+{
+    int nc = ibm->res * sub, i, dof, got = 0, zero_pdf = 0, bad_pair = 0;
+    double *prob = (double *)malloc(sizeof(double) * (size_t)(nc * nc + 1));
+    double *obs = (double *)calloc((size_t)(nc * nc + 1), sizeof(double)), tot, z, frac, se;
+    mft_rng r;
+    char msg[240];
+    tot = pdf_cells(ibm, f, wo, sub, prob);
+    mft_seed(&r, seed);
+    for (i = 0; i < n; ++i) {
+        mf_vec3 wi = mf_ibm_sample(ibm, f, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 h;
+        double p;
+        if (!(wi.z > 0)) { obs[nc * nc] += 1; continue; }
+        ++got;
+        h = mf_normalize(mf_add(wo, wi));
+        obs[(int)floor(nc * (0.5 * h.y + 0.5)) * nc + (int)floor(nc * (0.5 * h.x + 0.5))] += 1;
+        p = (double)mf_ibm_pdf(ibm, f, wo, wi);
+        if (!(p > 0)) ++zero_pdf;
+        if (i % 16 == 0) {
+            mf_real pp, ff = mf_ibm_brdf_pdf(ibm, f, wo, wi, &pp);
+            if (fabs((double)pp - p) > 1e-12 * p || fabs((double)(ff - mf_ibm_brdf(ibm, f, wo, wi))) > 1e-12 * (double)ff) ++bad_pair;
+        }
+    }
+    for (i = 0; i < nc * nc; ++i) prob[i] *= n;
+    prob[nc * nc] = n * fmax(1 - tot, 0.0);
+    z = mft_chi2(obs, prob, nc * nc + 1, &dof);
+    snprintf(msg, sizeof msg, "sampling vs mf_ibm_pdf, %s: chi-square z = %.2f (dof %d)", name, z, dof);
+    if (mft_verbose) printf("    %s\n", msg);
+    MFT_CHECK(z < 5, msg);
+    snprintf(msg, sizeof msg, "every sample has pdf > 0, %s (%d of %d)", name, zero_pdf, got);
+    MFT_CHECK(zero_pdf == 0 && got > n / 2, msg);
+    snprintf(msg, sizeof msg, "mf_ibm_brdf_pdf = mf_ibm_brdf and mf_ibm_pdf, %s", name);
+    MFT_CHECK(bad_pair == 0, msg);
+    frac = (double)got / n;
+    se = sqrt(frac * (1 - frac) / n);
+    snprintf(msg, sizeof msg, "integral of the pdf (%.5f) = fraction of samples returned (%.5f), %s", tot, frac, name);
+    MFT_NEAR(tot, frac, 0, 4 * se + 2e-3, msg);
+    if (want_norm > 0) {
+        snprintf(msg, sizeof msg, "pdf integrates to 1 without truncation or horizon loss, %s (%.5f)", name, tot);
+        MFT_NEAR(tot, want_norm, 0, 2e-3, msg);
+    }
+    free(prob);
+    free(obs);
+}
+
+static void test_sampling_pdf(void)
+{
+    const int W = 32;
+    mf_real *s = map_smooth(W, W, 0.6, 51), *fl = map_flakes(W, W, 4, 0.05, 52);
+    mf_ibm a, b, c;
+    mf_footprint med = fp_make(0.3, 0.6, 0.4, 0.1, -0.2, 0.3), tiny = fp_make(0.51, 0.22, 0.09, 0.03, 0.0, 0.08);
+    mf_footprint huge = fp_make(0.2, 0.3, 301.0, 17.0, -23.0, 260.0), point = fp_make(0.77, 0.41, 0, 0, 0, 0);
+    mf_footprint wrap = fp_make(0.99, 0.02, 0.2, 0.0, 0.0, 0.15);
+    mf_ibm_build(&a, s, W, W, MF_R(0.1));
+    mf_ibm_build_ex(&b, s, W, W, MF_R(0.1), 0, MF_R(5.0));
+    mf_ibm_build(&c, fl, W, W, MF_R(0.05));
+    check_sampling("smooth, footprint 13x10 texels (kd traversal)", &a, &med, mft_dir(0.3, 0.4), 100000, 2, 0, 61);
+    check_sampling("smooth, 5-sigma cut", &b, &med, mft_dir(0.3, 0.4), 100000, 2, 1.0, 62);
+    check_sampling("flakes, footprint 3x3 texels (direct sum)", &c, &tiny, mft_dir(0.7, 2.0), 100000, 1, 0, 63);
+    check_sampling("flakes, wrapping axis-aligned footprint", &c, &wrap, mft_dir(1.1, -1.0), 60000, 1, 0, 64);
+    check_sampling("flakes, 8e4 periods (whole-map histogram)", &c, &huge, mft_dir(0.4, 0.3), 60000, 1, 0, 65);
+    check_sampling("smooth, zero-area footprint (one texel)", &a, &point, mft_dir(0.9, 1.0), 60000, 2, 0, 66);
+    mf_ibm_release(&a);
+    mf_ibm_release(&b);
+    mf_ibm_release(&c);
+    free(s);
+    free(fl);
+}
+
 int test_ibm_dummy;
 
 void test_ibm(void)
@@ -545,4 +669,5 @@ void test_ibm(void)
     test_weights();
     test_texel_contribution();
     test_convergence();
+    test_sampling_pdf();
 }
