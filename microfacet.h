@@ -2758,6 +2758,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * bin once, the pieces by direct sum or kd traversal, all divided by |A|. */
 MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
+    mf_real tot;
     int i;
     if (p->mode == MF__IBM_NONE) { for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0); return; }
     if (p->mode == MF__IBM_POINT) {
@@ -2771,6 +2772,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         return;
     }
     for (i = 0; i < s->n; ++i) s->w[i] = p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]);
+    tot = p->full * (mf_real)ibm->width * (mf_real)ibm->height;
     {
         mf_real xs[12], ys[12], c0, c1, f0, f1, col;
         mf__ibm_piece pc;
@@ -2782,6 +2784,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
             for (col = c0; col <= c1; col += MF_R(1.0)) {
                 if (col >= f0 && col <= f1) continue;
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
+                tot += mf__ibm_shoelace(pc.x, pc.y, pc.n);
                 if (p->direct) mf__ibm_direct(ibm, &pc, s);
                 else
                     for (i = 0; i < s->n; i += MF_IBM_BATCH)
@@ -2789,7 +2792,10 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
             }
         }
     }
-    for (i = 0; i < s->n; ++i) s->w[i] /= p->area;
+    /* |A| as the pieces add up, so that the weights of all bins sum to 1 even
+     * where float round-off moves the corners of a thin footprint */
+    if (!(tot > MF_R(0.0))) tot = p->area;
+    for (i = 0; i < s->n; ++i) s->w[i] /= tot;
 }
 
 /* Fraction of the footprint's area whose texels fall in `bin` (texels are
