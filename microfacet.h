@@ -2859,46 +2859,49 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
 {
     mf__ibm_set s;
     mf__ibm_fp p;
-    mf_real cf[MF_IBM_MAX_WINDOW], cp[MF_IBM_MAX_WINDOW], gx = MF_R(1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
+    mf_real gx = MF_R(-1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
     mf_vec3 h;
     int dx, dy, r = ibm->radius, b = ibm->res, cx, cy, i;
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
-    if (want_f && ibm->has_shadow)
-        gx = MF_R(1.0) / (MF_R(1.0) + mf_lambda(&ibm->shadow, wo) + mf_lambda(&ibm->shadow, wi));
+    /* candidates: non-empty bins of the neighbourhood facing wo (and wi when
+     * only f is wanted); their weights first, the lobes only where W_j > 0 */
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
     mf__ibm_set_init(&s, cx, cy, r);
     for (dy = -r; dy <= r; ++dy)
         for (dx = -r; dx <= r; ++dx) {
             int j = (cx + dx) + b * (cy + dy);
             mf_vec3 t;
-            mf_real co, ci, ch, d, lo, fo = MF_R(0.0);
             if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
             if (mf_ibm_bin_texels(ibm, j) == 0) continue;
             t = mf_ibm_bin_normal(ibm, j);
-            co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
-            if (!(co > MF_R(0.0)) || !(ch > MF_R(0.0))) continue;
-            {
-                mf_vec3 xh = mf_cross(h, t), xo = mf_cross(wo, t);
-                d = mf_beckmann_D(a, a, mf_vec3_make(MF_SQRT(mf_dot(xh, xh)), MF_R(0.0), ch));
-                if (!(d > MF_R(0.0))) continue;
-                lo = mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(mf_dot(xo, xo)), MF_R(0.0), co));
-            }
-            if (want_f && ci > MF_R(0.0)) {
-                mf_vec3 xi = mf_cross(wi, t);
-                mf_real li = mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(mf_dot(xi, xi)), MF_R(0.0), ci));
-                fo = d * gx / ((MF_R(1.0) + lo + li) * MF_R(4.0) * wo.z * wi.z);
-            }
-            if (!pdf && !(fo > MF_R(0.0))) continue;
-            cf[s.n] = fo;
-            cp[s.n] = d / (MF_R(4.0) * co * (MF_R(1.0) + lo));
+            if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
+            if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
             mf__ibm_set_add(&s, dx, dy, j);
         }
     if (s.n == 0) return MF_R(0.0);
     mf__ibm_weights(ibm, &p, &s);
-    for (i = 0; i < s.n; ++i) { sf += s.w[i] * cf[i]; spdf += s.w[i] * cp[i]; }
+    for (i = 0; i < s.n; ++i) {
+        mf_vec3 t, xh, xo;
+        mf_real co, ci, ch, d, lo;
+        if (!(s.w[i] > MF_R(0.0))) continue;
+        t = mf_ibm_bin_normal(ibm, s.bin[i]);
+        co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
+        xh = mf_cross(h, t); xo = mf_cross(wo, t);
+        d = mf_beckmann_D(a, a, mf_vec3_make(MF_SQRT(mf_dot(xh, xh)), MF_R(0.0), ch));
+        if (!(d > MF_R(0.0))) continue;
+        lo = mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(mf_dot(xo, xo)), MF_R(0.0), co));
+        spdf += s.w[i] * d / (MF_R(4.0) * co * (MF_R(1.0) + lo));
+        if (want_f && ci > MF_R(0.0)) {
+            mf_vec3 xi = mf_cross(wi, t);
+            mf_real li = mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(mf_dot(xi, xi)), MF_R(0.0), ci));
+            if (gx < MF_R(0.0))
+                gx = ibm->has_shadow ? MF_R(1.0) / (MF_R(1.0) + mf_lambda(&ibm->shadow, wo) + mf_lambda(&ibm->shadow, wi)) : MF_R(1.0);
+            sf += s.w[i] * d * gx / ((MF_R(1.0) + lo + li) * MF_R(4.0) * wo.z * wi.z);
+        }
+    }
     if (pdf) *pdf = spdf;
     return mf_min(sf, MF_BIG);
 }
