@@ -2170,21 +2170,27 @@ MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
  * Map (Eq. 5.15, 5.17) with node-level prefiltering; sampling and pdf Eq. 5.16. */
 
 /* Layout of the single integer array (32-bit words), built by mf_ibm_build:
- *   header      MF__IBM_HEADER words: magic, version, sizes, parameters, checksum
- *   offsets     b*b + 1 packed fields: start of bin j's list (Eq. 5.17 index I)
- *   means       b*b words: mean normal of each bin, 16 + 16 bits inside the bin
- *   positions   N packed fields: the inverse bin map B^-1, texel positions as
- *               Morton codes, grouped by bin, sorted inside each bin
- *   bin map     N packed fields (row-major): the bin of each texel (Eq. 5.15),
- *               stored as ix | iy << s (s bits per axis)
- * The forest of kd-trees of Sec. 5.4.4 is implicit: the kd-tree splits the
- * larger side of the power-of-two box holding the map in the middle, and the
- * Morton code (bits interleaved in that split order) sorts every bin's list so
- * that each node is a contiguous range; a node's split is found by binary
- * search on the node's bit, so the trees cost no memory at all. */
+ *   header   MF__IBM_HEADER words: magic, version, sizes, parameters, checksum
+ *   index    b*b + 1 packed fields: start of bin j's block in the lists (the
+ *            index I of Sec. 5.4.4)
+ *   means    b*b words: mean normal of each bin, 16 + 16 bits inside the bin
+ *   lists    packed fields, one block per bin: the inverse bin map B^-1 (Eq.
+ *            5.17), the bin's texel positions as Morton codes, sorted; a bin of
+ *            n >= MF_IBM_TREE_MIN texels puts first n and the top k levels of
+ *            its kd-tree (forest F): the 2^k + 1 boundaries of its level-k nodes
+ *            in its list, k = floor(log2(n / 16))
+ *   bin map  N packed fields (row-major): the bin of each texel (Eq. 5.15),
+ *            stored as ix | iy << s (s bits per axis)
+ * The kd-trees split the larger side of the power-of-two box holding the map
+ * in the middle (x first on ties). The Morton code interleaves the bits in
+ * exactly that order, so sorting a bin's positions by it makes every node a
+ * contiguous range (Sec. 5.4.4): nodes down to level k are read from the
+ * stored boundaries, deeper splits are found by binary search on the node's
+ * bit, so no pointers are stored at all. */
 #define MF_IBM_MAGIC 0x4d464942u          /* "BIFM" in little-endian bytes */
 #define MF_IBM_VERSION 1u
 #define MF_IBM_LEAF 10                    /* leaf size L of Sec. 5.4.4 */
+#define MF_IBM_TREE_MIN 32                /* bins this large store the top of their kd-tree */
 #define MF_IBM_MAX_RES 1024               /* bins per axis at most (index memory b^2) */
 #define MF_IBM_MAX_RADIUS 8               /* neighbourhood radius in bins at most */
 #define MF_IBM_MAX_WINDOW 289             /* (2 MF_IBM_MAX_RADIUS + 1)^2 */
@@ -2214,7 +2220,8 @@ typedef struct mf_ibm {
     int res;                    /* b, bins per axis: b*b bins over [-1,1]^2 (Sec. 5.4.2) */
     int radius;                 /* neighbourhood radius: bins with dx^2+dy^2 <= r(r+1); 2 -> 21 bins */
     int kx, ky;                 /* log2 of the power-of-two box holding the map */
-    int off_bits, pos_bits, bin_bits, axis_bits;   /* widths of the packed fields */
+    int off_bits, pos_bits, list_bits, bin_bits, axis_bits;   /* widths of the packed fields */
+    unsigned int list_len;      /* fields in the lists section */
     size_t off_at, mean_at, pos_at, bin_at;       /* word offsets of the sections */
     mf_real alpha;              /* Beckmann flake roughness */
     mf_real cut;                /* cut of the flake lobe in sigmas (3, Sec. 5.4.1) */
@@ -2297,17 +2304,40 @@ MF_INLINE int mf_ibm_bin_of(const mf_ibm *ibm, mf_vec3 n)
     return mf__ibm_cell(n.x, ibm->res) + ibm->res * mf__ibm_cell(n.y, ibm->res);
 }
 
-/* start of bin j's list in the positions section, and the next bin's */
+/* start of bin j's block in the lists section */
 MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
 {
     return mf__ibm_get(ibm->data + ibm->off_at, (size_t)j, ibm->off_bits);
 }
 
+/* stored kd-tree levels of a bin of n texels: floor(log2(n / 16)), within the tree's depth */
+MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
+{
+    int k = 0;
+    while (k < 24 && (n >> (k + 5)) != 0u) ++k;
+    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
+}
+
+/* Bin j's texel count; *base: the first of its positions, *tab: its level-k
+ * node boundaries (relative to base), *k: the stored levels (0: none). */
+MF_INLINE unsigned int mf__ibm_bin_info(const mf_ibm *ibm, int j, unsigned int *base, unsigned int *tab, int *k)
+{
+    unsigned int s = mf__ibm_off(ibm, j), len = mf__ibm_off(ibm, j + 1) - s, n;
+    if (len < (unsigned int)MF_IBM_TREE_MIN) { *base = s; *tab = s; *k = 0; return len; }
+    n = mf__ibm_get(ibm->data + ibm->pos_at, s, ibm->list_bits);
+    *k = mf__ibm_tree_levels(ibm, n);
+    *tab = s + 1u;
+    *base = s + 2u + (1u << *k);
+    return n;
+}
+
 /* Number of texels in bin `bin`. */
 MF_INLINE int mf_ibm_bin_texels(const mf_ibm *ibm, int bin)
 {
+    unsigned int base, tab;
+    int k;
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return 0;
-    return (int)(mf__ibm_off(ibm, bin + 1) - mf__ibm_off(ibm, bin));
+    return (int)mf__ibm_bin_info(ibm, bin, &base, &tab, &k);
 }
 
 /* The normal that represents bin `bin` in C and in sampling: the mean of the
@@ -2675,7 +2705,7 @@ MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned
     const unsigned int *pos = ibm->data + ibm->pos_at;
     while (s < e) {
         unsigned int m = s + (e - s) / 2u;
-        if ((mf__ibm_get(pos, m, ibm->pos_bits) >> bit) & 1u) e = m;
+        if ((mf__ibm_get(pos, m, ibm->list_bits) >> bit) & 1u) e = m;
         else s = m + 1u;
     }
     return s;
@@ -2683,6 +2713,7 @@ MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned
 
 typedef struct mf__ibm_frame {
     int x0, y0, lx, ly;
+    unsigned int pre;               /* the node's index in its level (its code prefix) */
     unsigned int s[MF_IBM_BATCH], e[MF_IBM_BATCH];
 } mf__ibm_frame;
 
@@ -2694,14 +2725,16 @@ typedef struct mf__ibm_frame {
 MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, const int *bins, int nb, mf_real *acc)
 {
     mf__ibm_frame st[MF__IBM_STACK], cur;
-    unsigned int cnt[MF_IBM_BATCH];
+    unsigned int cnt[MF_IBM_BATCH], base[MF_IBM_BATCH], tab[MF_IBM_BATCH];
+    int lev[MF_IBM_BATCH];
     mf_real frac[MF_IBM_BATCH];
     const unsigned int *pos = ibm->data + ibm->pos_at;
-    int sp = 0, i;
-    cur.x0 = 0; cur.y0 = 0; cur.lx = ibm->kx; cur.ly = ibm->ky;
+    int sp = 0, i, depth = ibm->kx + ibm->ky;
+    cur.x0 = 0; cur.y0 = 0; cur.lx = ibm->kx; cur.ly = ibm->ky; cur.pre = 0u;
     for (i = 0; i < nb; ++i) {
-        cur.s[i] = mf__ibm_off(ibm, bins[i]);
-        cur.e[i] = mf__ibm_off(ibm, bins[i] + 1);
+        unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]);
+        cur.s[i] = base[i];
+        cur.e[i] = base[i] + nt;
         cnt[i] = 0u;
         frac[i] = MF_R(0.0);
     }
@@ -2723,14 +2756,17 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                     for (; s < e; ++s) {
                         int x, y;
                         mf_real a;
-                        mf__ibm_unmorton(ibm->kx, ibm->ky, mf__ibm_get(pos, s, ibm->pos_bits), &x, &y);
+                        mf__ibm_unmorton(ibm->kx, ibm->ky, mf__ibm_get(pos, s, ibm->list_bits), &x, &y);
                         a = mf__ibm_texel_area(pc, x, y);
                         if (a >= MF_R(1.0)) ++cnt[i];
                         else frac[i] += a;
                     }
                     cur.e[i] = cur.s[i];
                 } else {
-                    unsigned int m = mf__ibm_split(ibm, s, e, bit);
+                    /* the split: stored down to level k, else binary search */
+                    int l = depth - cur.lx - cur.ly, kk = lev[i];
+                    unsigned int m = l < kk ? base[i] + mf__ibm_get(pos, (size_t)tab[i] + (size_t)((2u * cur.pre + 1u) << (kk - l - 1)), ibm->list_bits)
+                                            : mf__ibm_split(ibm, s, e, bit);
                     right.s[i] = m; right.e[i] = e;
                     cur.e[i] = m;
                     if (m > s) any = 1;
@@ -2741,6 +2777,8 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                 if (cur.lx >= cur.ly) { --cur.lx; right.x0 = cur.x0 + (1 << cur.lx); right.y0 = cur.y0; }
                 else { --cur.ly; right.x0 = cur.x0; right.y0 = cur.y0 + (1 << cur.ly); }
                 right.lx = cur.lx; right.ly = cur.ly;
+                cur.pre *= 2u;
+                right.pre = cur.pre + 1u;
                 if (rany) {
                     if (any) { if (sp < MF__IBM_STACK) st[sp++] = right; }
                     else { cur = right; continue; }
@@ -3571,25 +3609,28 @@ static void mf__ibm_put(unsigned int *base, size_t i, int w, unsigned int v)
 
 /* The derived fields of a map from its header values; returns the word count
  * (0 if the sizes are out of range). */
-static size_t mf__ibm_layout(mf_ibm *ibm, int width, int height, int res, int radius)
+static size_t mf__ibm_layout(mf_ibm *ibm, int width, int height, int res, int radius, unsigned int list_len)
 {
     size_t n, bins, words;
     if (width < 1 || width > 16384 || height < 1 || height > 16384 || res < 1 || res > MF_IBM_MAX_RES ||
-        radius < 0 || radius > MF_IBM_MAX_RADIUS)
+        radius < 0 || radius > MF_IBM_MAX_RADIUS || list_len < (unsigned int)width * (unsigned int)height ||
+        list_len > 0x7fffffffu)
         return 0;
     n = (size_t)width * (size_t)height;
     bins = (size_t)res * (size_t)res;
     ibm->width = width; ibm->height = height; ibm->res = res; ibm->radius = radius;
     ibm->kx = mf__ibm_bitlen((size_t)width - 1u);
     ibm->ky = mf__ibm_bitlen((size_t)height - 1u);
-    ibm->off_bits = mf__ibm_bitlen(n);
+    ibm->list_len = list_len;
+    ibm->off_bits = mf__ibm_bitlen(list_len);
     ibm->pos_bits = ibm->kx + ibm->ky > 0 ? ibm->kx + ibm->ky : 1;
+    ibm->list_bits = ibm->pos_bits > ibm->off_bits ? ibm->pos_bits : ibm->off_bits;
     ibm->axis_bits = res > 1 ? mf__ibm_bitlen((size_t)res - 1u) : 1;
     ibm->bin_bits = 2 * ibm->axis_bits;
     ibm->off_at = MF__IBM_HEADER;
     ibm->mean_at = ibm->off_at + ((bins + 1u) * (size_t)ibm->off_bits + 31u) / 32u + 1u;
     ibm->pos_at = ibm->mean_at + bins;
-    ibm->bin_at = ibm->pos_at + (n * (size_t)ibm->pos_bits + 31u) / 32u + 1u;
+    ibm->bin_at = ibm->pos_at + ((size_t)list_len * (size_t)ibm->list_bits + 31u) / 32u + 1u;
     words = ibm->bin_at + (n * (size_t)ibm->bin_bits + 31u) / 32u + 1u;
     if (words >= (size_t)0xffffffffu) return 0;
     return words;
@@ -3622,11 +3663,26 @@ static void mf__ibm_zero(mf_ibm *ibm)
 {
     ibm->data = 0; ibm->words = 0;
     ibm->width = ibm->height = ibm->res = ibm->radius = ibm->kx = ibm->ky = 0;
-    ibm->off_bits = ibm->pos_bits = ibm->bin_bits = ibm->axis_bits = 0;
+    ibm->off_bits = ibm->pos_bits = ibm->list_bits = ibm->bin_bits = ibm->axis_bits = 0;
+    ibm->list_len = 0u;
     ibm->off_at = ibm->mean_at = ibm->pos_at = ibm->bin_at = 0;
     ibm->alpha = ibm->cut = ibm->shadow_ax = ibm->shadow_ay = MF_R(0.0);
     ibm->has_shadow = 0;
     ibm->shadow = mf_beckmann(MF_R(1.0), MF_R(1.0));
+}
+
+/* the resolution (Eq. 5.14) and the neighbourhood radius for a cut */
+static void mf__ibm_resolution(mf_real alpha, mf_real cut, int resolution, int *res, int *radius)
+{
+    mf_real cs = cut * alpha / MF_SQRT(MF_R(2.0));              /* tan(theta0), theta0 = atan(cut sigma) */
+    mf_real s0 = cs / MF_SQRT(MF_R(1.0) + cs * cs), r;          /* sin(theta0) */
+    if (resolution > 0) *res = resolution;
+    else {
+        mf_real b = MF_FLOOR(MF_R(5.0) / s0);                   /* Eq. 5.14 */
+        *res = !(b < (mf_real)MF_IBM_MAX_RES) ? MF_IBM_MAX_RES : (b < MF_R(1.0) ? 1 : (int)b);
+    }
+    r = MF_CEIL((mf_real)*res * s0 * MF_R(0.5) - MF_R(0.5));
+    *radius = r > MF_R(2.0) ? (r < (mf_real)MF_IBM_MAX_RADIUS ? (int)r : MF_IBM_MAX_RADIUS) : 2;
 }
 
 MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
@@ -3634,9 +3690,9 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
 {
     mf_ibm L;
     size_t n, bins, words, i, ncodes;
-    unsigned int *data = 0, *tmp = 0, *cur = 0, *pos, *binmap;
+    unsigned int *data = 0, *tmp = 0, *cur = 0, *list, *binmap, start = 0u, amask;
     double *sums = 0, sxx = 0.0, syy = 0.0;
-    mf_real alpha, cut, cs, s0;
+    mf_real alpha, cut;
     int res, radius, x, y;
     if (!ibm) return MF_ERROR_INVALID_ARGUMENT;
     mf__ibm_zero(ibm);
@@ -3646,91 +3702,114 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
         return MF_ERROR_INVALID_ARGUMENT;
     alpha = mf__ibm_bitsf(mf__ibm_fbits(mf__clamp_alpha(flake_alpha)));
     cut = mf__ibm_bitsf(mf__ibm_fbits(cut_sigmas > MF_R(0.0) ? cut_sigmas : MF_R(3.0)));
-    cs = cut * alpha / MF_SQRT(MF_R(2.0));                       /* tan(theta0), theta0 = atan(cut sigma) */
-    s0 = cs / MF_SQRT(MF_R(1.0) + cs * cs);                      /* sin(theta0) */
-    if (resolution > 0) res = resolution;
-    else {
-        mf_real b = MF_FLOOR(MF_R(5.0) / s0);                    /* Eq. 5.14 */
-        res = !(b < (mf_real)MF_IBM_MAX_RES) ? MF_IBM_MAX_RES : (b < MF_R(1.0) ? 1 : (int)b);
-    }
-    {
-        mf_real r = MF_CEIL((mf_real)res * s0 * MF_R(0.5) - MF_R(0.5));
-        radius = r > MF_R(2.0) ? (r < (mf_real)MF_IBM_MAX_RADIUS ? (int)r : MF_IBM_MAX_RADIUS) : 2;
-    }
-    words = mf__ibm_layout(&L, width, height, res, radius);
-    if (!words) return MF_ERROR_INVALID_ARGUMENT;
+    mf__ibm_resolution(alpha, cut, resolution, &res, &radius);
     n = (size_t)width * (size_t)height;
     bins = (size_t)res * (size_t)res;
+    if (!mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n)) return MF_ERROR_INVALID_ARGUMENT;
     ncodes = (size_t)1 << (L.kx + L.ky);
-    data = (unsigned int *)MF_MALLOC(words * sizeof(unsigned int));
+    amask = (1u << L.axis_bits) - 1u;
     tmp = (unsigned int *)MF_MALLOC(ncodes * sizeof(unsigned int));
     cur = (unsigned int *)MF_MALLOC((bins + 1u) * sizeof(unsigned int));
     sums = (double *)MF_MALLOC(2u * bins * sizeof(double));
-    if (!data || !tmp || !cur || !sums) {
-        MF_FREE(data); MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
+    if (!tmp || !cur || !sums) {
+        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
         return MF_ERROR_OUT_OF_MEMORY;
     }
-    for (i = 0; i < words; ++i) data[i] = 0u;
     for (i = 0; i <= bins; ++i) cur[i] = 0u;
     for (i = 0; i < 2u * bins; ++i) sums[i] = 0.0;
     if (ncodes != n)
         for (i = 0; i < ncodes; ++i) tmp[i] = 0xffffffffu;
-    pos = data + L.pos_at;
-    binmap = data + L.bin_at;
-    /* pass 1: validate, bin (Eq. 5.15), bin map, per-bin sums, slope moments,
-     * and every texel's bin at its Morton code */
+    /* pass 1: validate, bin (Eq. 5.15), count, per-bin sums, slope moments;
+     * every texel's bin (ix | iy << s) goes to its Morton code */
     for (y = 0; y < height; ++y)
         for (x = 0; x < width; ++x) {
             size_t k = (size_t)y * (size_t)width + (size_t)x;
             const mf_real *nv = normals_xyz + 3u * k;
             mf_real nx = nv[0], ny = nv[1], nz = nv[2], l2 = nx * nx + ny * ny + nz * nz, il;
-            int ix, iy;
-            unsigned int j;
+            unsigned int ix, iy, j;
             if (!(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
-                MF_FREE(data); MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
+                MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
                 return MF_ERROR_INVALID_DATA;
             }
             il = MF_R(1.0) / MF_SQRT(l2);
             nx *= il; ny *= il; nz *= il;
-            ix = mf__ibm_cell(nx, res); iy = mf__ibm_cell(ny, res);
-            j = (unsigned int)ix + (unsigned int)res * (unsigned int)iy;
+            ix = (unsigned int)mf__ibm_cell(nx, res); iy = (unsigned int)mf__ibm_cell(ny, res);
+            j = ix + (unsigned int)res * iy;
             ++cur[j];
             sums[2u * j] += (double)nx;
             sums[2u * j + 1u] += (double)ny;
             sxx += (double)(nx / nz) * (double)(nx / nz);
             syy += (double)(ny / nz) * (double)(ny / nz);
-            mf__ibm_put(binmap, k, L.bin_bits, (unsigned int)ix | ((unsigned int)iy << L.axis_bits));
-            tmp[mf__ibm_morton(L.kx, L.ky, (unsigned int)x, (unsigned int)y)] = j;
+            tmp[mf__ibm_morton(L.kx, L.ky, (unsigned int)x, (unsigned int)y)] = ix | (iy << L.axis_bits);
         }
-    /* means, quantized inside their bin; the index (Eq. 5.17: offsets) */
-    {
-        unsigned int start = 0u;
-        for (i = 0; i < bins; ++i) {
-            unsigned int c = cur[i], q = 0x80008000u;
-            if (c) {
-                double fx = (sums[2u * i] / c + 1.0) * 0.5 * res - (double)(i % (size_t)res);
-                double fy = (sums[2u * i + 1u] / c + 1.0) * 0.5 * res - (double)(i / (size_t)res);
-                fx = fx < 0.0 ? 0.0 : (fx > 1.0 ? 1.0 : fx);
-                fy = fy < 0.0 ? 0.0 : (fy > 1.0 ? 1.0 : fy);
-                {
-                    unsigned int qx = (unsigned int)(fx * 65536.0 + 0.5), qy = (unsigned int)(fy * 65536.0 + 0.5);
-                    q = ((qx > 65535u ? 65535u : qx) << 16) | (qy > 65535u ? 65535u : qy);
-                }
-            }
-            data[L.mean_at + i] = q;
-            mf__ibm_put(data + L.off_at, i, L.off_bits, start);
-            cur[i] = start;
-            start += c;
-        }
-        mf__ibm_put(data + L.off_at, bins, L.off_bits, start);
+    /* block sizes: n, or n + 2 + 2^k with the top k levels of the kd-tree */
+    for (i = 0; i < bins; ++i) {
+        unsigned int c = cur[i];
+        start += c < (unsigned int)MF_IBM_TREE_MIN ? c : c + 2u + (1u << mf__ibm_tree_levels(&L, c));
     }
-    /* pass 2: the inverse bin map - positions grouped by bin, each group in
-     * Morton (kd) order because the codes are visited in increasing order */
+    words = mf__ibm_layout(&L, width, height, res, radius, start);
+    data = words ? (unsigned int *)MF_MALLOC(words * sizeof(unsigned int)) : 0;
+    if (!data) {
+        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
+        return words ? MF_ERROR_OUT_OF_MEMORY : MF_ERROR_INVALID_ARGUMENT;
+    }
+    for (i = 0; i < words; ++i) data[i] = 0u;
+    list = data + L.pos_at;
+    binmap = data + L.bin_at;
+    /* means, quantized inside their bin; the index (Sec. 5.4.4); cur becomes
+     * the write cursor of each bin's positions */
+    start = 0u;
+    for (i = 0; i < bins; ++i) {
+        unsigned int c = cur[i], q = 0x80008000u;
+        if (c) {
+            double fx = (sums[2u * i] / c + 1.0) * 0.5 * res - (double)(i % (size_t)res);
+            double fy = (sums[2u * i + 1u] / c + 1.0) * 0.5 * res - (double)(i / (size_t)res);
+            unsigned int qx, qy;
+            fx = fx < 0.0 ? 0.0 : (fx > 1.0 ? 1.0 : fx);
+            fy = fy < 0.0 ? 0.0 : (fy > 1.0 ? 1.0 : fy);
+            qx = (unsigned int)(fx * 65536.0 + 0.5); qy = (unsigned int)(fy * 65536.0 + 0.5);
+            q = ((qx > 65535u ? 65535u : qx) << 16) | (qy > 65535u ? 65535u : qy);
+        }
+        data[L.mean_at + i] = q;
+        mf__ibm_put(data + L.off_at, i, L.off_bits, start);
+        if (c < (unsigned int)MF_IBM_TREE_MIN) { cur[i] = start; start += c; }
+        else {
+            unsigned int kn = 1u << mf__ibm_tree_levels(&L, c);
+            mf__ibm_put(list, start, L.list_bits, c);
+            cur[i] = start + 2u + kn;
+            start += c + 2u + kn;
+        }
+    }
+    mf__ibm_put(data + L.off_at, bins, L.off_bits, start);
+    MF_FREE(sums);
+    /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
+     * grouped by bin, each group sorted because the codes come in order -
+     * and the bin map (Eq. 5.15) */
     for (i = 0; i < ncodes; ++i) {
-        unsigned int j = tmp[i];
-        if (j != 0xffffffffu) mf__ibm_put(pos, cur[j]++, L.pos_bits, (unsigned int)i);
+        unsigned int v = tmp[i], j;
+        if (v == 0xffffffffu) continue;
+        j = (v & amask) + (unsigned int)res * (v >> L.axis_bits);
+        mf__ibm_put(list, cur[j]++, L.list_bits, (unsigned int)i);
+        mf__ibm_unmorton(L.kx, L.ky, (unsigned int)i, &x, &y);
+        mf__ibm_put(binmap, (size_t)y * (size_t)width + (size_t)x, L.bin_bits, v);
     }
-    MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
+    MF_FREE(tmp); MF_FREE(cur);
+    /* the forest (Sec. 5.4.4): level-k node boundaries of the large bins */
+    for (i = 0; i < bins; ++i) {
+        unsigned int s, e, c, base, tab, q, node = 0u;
+        int k, shift;
+        L.data = data;
+        s = mf__ibm_off(&L, (int)i);
+        e = mf__ibm_off(&L, (int)i + 1);
+        if (e - s < (unsigned int)MF_IBM_TREE_MIN) continue;
+        c = mf__ibm_bin_info(&L, (int)i, &base, &tab, &k);
+        shift = L.kx + L.ky - k;
+        for (q = 0; q < c; ++q) {
+            unsigned int idx = mf__ibm_get(list, base + q, L.list_bits) >> shift;
+            while (node <= idx) mf__ibm_put(list, tab + node++, L.list_bits, q);
+        }
+        while (node <= (1u << k)) mf__ibm_put(list, tab + node++, L.list_bits, c);
+    }
     data[0] = MF_IBM_MAGIC;
     data[1] = MF_IBM_VERSION;
     data[2] = (unsigned int)words;
@@ -3742,6 +3821,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     data[8] = mf__ibm_fbits(cut);
     data[9] = mf__ibm_fbits(MF_SQRT((mf_real)(2.0 * sxx / (double)n)));
     data[10] = mf__ibm_fbits(MF_SQRT((mf_real)(2.0 * syy / (double)n)));
+    data[11] = L.list_len;
     data[MF__IBM_HEADER - 1] = mf__ibm_checksum(data, words);
     *ibm = L;
     ibm->data = data;
@@ -3783,45 +3863,70 @@ MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap)
 /* every check a query relies on; 1 if the array is a valid map */
 static int mf__ibm_valid(mf_ibm *L, const unsigned int *w, size_t words)
 {
-    size_t n, bins, j, words2;
+    size_t n, bins, j, total = 0;
     mf_real a, c, sx, sy;
-    unsigned int prev_end = 0u;
+    unsigned int prev_end = 0u, amask;
+    const unsigned int *list;
     if (words < MF__IBM_HEADER || w[0] != MF_IBM_MAGIC || w[1] != MF_IBM_VERSION || (size_t)w[2] != words) return 0;
     if (w[3] > 16384u || w[4] > 16384u || w[5] > (unsigned int)MF_IBM_MAX_RES || w[6] > (unsigned int)MF_IBM_MAX_RADIUS) return 0;
-    words2 = mf__ibm_layout(L, (int)w[3], (int)w[4], (int)w[5], (int)w[6]);
-    if (words2 != words) return 0;
-    for (j = 11; j < MF__IBM_HEADER - 1; ++j) if (w[j] != 0u) return 0;
+    if (mf__ibm_layout(L, (int)w[3], (int)w[4], (int)w[5], (int)w[6], w[11]) != words) return 0;
+    for (j = 12; j < MF__IBM_HEADER - 1; ++j) if (w[j] != 0u) return 0;
     a = mf__ibm_bitsf(w[7]); c = mf__ibm_bitsf(w[8]); sx = mf__ibm_bitsf(w[9]); sy = mf__ibm_bitsf(w[10]);
     if (!(a > MF_R(0.0)) || !(a < MF_BIG) || !(c > MF_R(0.0)) || !(c <= MF_R(10.0)) || !(sx >= MF_R(0.0)) ||
         !(sx < MF_BIG) || !(sy >= MF_R(0.0)) || !(sy < MF_BIG))
         return 0;
     if (mf__ibm_checksum(w, words) != w[MF__IBM_HEADER - 1]) return 0;
+    L->data = (unsigned int *)0;
     n = (size_t)L->width * (size_t)L->height;
     bins = (size_t)L->res * (size_t)L->res;
+    list = w + L->pos_at;
+    amask = (1u << L->axis_bits) - 1u;
     /* the bin map: both bin coordinates in range */
     for (j = 0; j < n; ++j) {
         unsigned int v = mf__ibm_get(w + L->bin_at, j, L->bin_bits);
-        if ((v & ((1u << L->axis_bits) - 1u)) >= (unsigned int)L->res || (v >> L->axis_bits) >= (unsigned int)L->res) return 0;
+        if ((v & amask) >= (unsigned int)L->res || (v >> L->axis_bits) >= (unsigned int)L->res) return 0;
     }
-    /* the index and the lists: contiguous, in range, sorted, each position in
-     * the map and in the bin the bin map gives it - with N entries in all,
-     * every texel appears exactly once */
+    /* the index and the blocks: contiguous and in range; the kd-tree tops
+     * monotone from 0 to n; the positions in the map, sorted, each in the
+     * level-k node its boundaries give and in the bin the bin map gives it -
+     * with N positions in all, every texel appears exactly once */
     if (mf__ibm_get(w + L->off_at, 0, L->off_bits) != 0u) return 0;
     for (j = 0; j < bins; ++j) {
-        unsigned int s = mf__ibm_get(w + L->off_at, j, L->off_bits), e = mf__ibm_get(w + L->off_at, j + 1u, L->off_bits), q;
+        unsigned int s = mf__ibm_get(w + L->off_at, j, L->off_bits), e = mf__ibm_get(w + L->off_at, j + 1u, L->off_bits);
         unsigned int want = (unsigned int)(j % (size_t)L->res) | ((unsigned int)(j / (size_t)L->res) << L->axis_bits);
-        if (s != prev_end || e < s || (size_t)e > n) return 0;
+        unsigned int cnt, base, tab = 0u, q, t;
+        int k = 0, shift;
+        if (s != prev_end || e < s || e > L->list_len) return 0;
         prev_end = e;
-        for (q = s; q < e; ++q) {
-            unsigned int code = mf__ibm_get(w + L->pos_at, q, L->pos_bits);
+        if (e - s < (unsigned int)MF_IBM_TREE_MIN) { cnt = e - s; base = s; }
+        else {
+            cnt = mf__ibm_get(list, s, L->list_bits);
+            if (cnt < (unsigned int)MF_IBM_TREE_MIN || (size_t)cnt > n) return 0;
+            k = mf__ibm_tree_levels(L, cnt);
+            if ((size_t)e - s != (size_t)cnt + 2u + ((size_t)1 << k)) return 0;
+            tab = s + 1u;
+            base = tab + 1u + (1u << k);
+            if (mf__ibm_get(list, tab, L->list_bits) != 0u || mf__ibm_get(list, tab + (1u << k), L->list_bits) != cnt) return 0;
+            for (t = 0; t < (1u << k); ++t)
+                if (mf__ibm_get(list, tab + t, L->list_bits) > mf__ibm_get(list, tab + t + 1u, L->list_bits)) return 0;
+        }
+        total += cnt;
+        shift = L->kx + L->ky - k;
+        for (q = 0; q < cnt; ++q) {
+            unsigned int code = mf__ibm_get(list, base + q, L->list_bits);
             int x, y;
-            if (q > s && code <= mf__ibm_get(w + L->pos_at, q - 1u, L->pos_bits)) return 0;
+            if (code >> L->pos_bits) return 0;
+            if (q > 0 && code <= mf__ibm_get(list, base + q - 1u, L->list_bits)) return 0;
             mf__ibm_unmorton(L->kx, L->ky, code, &x, &y);
             if (x >= L->width || y >= L->height || mf__ibm_morton(L->kx, L->ky, (unsigned int)x, (unsigned int)y) != code) return 0;
             if (mf__ibm_get(w + L->bin_at, (size_t)y * (size_t)L->width + (size_t)x, L->bin_bits) != want) return 0;
+            if (k > 0) {
+                unsigned int idx = code >> shift;
+                if (q < mf__ibm_get(list, tab + idx, L->list_bits) || q >= mf__ibm_get(list, tab + idx + 1u, L->list_bits)) return 0;
+            }
         }
     }
-    return (size_t)prev_end == n;
+    return prev_end == L->list_len && total == n;
 }
 
 MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes)
