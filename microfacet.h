@@ -2283,9 +2283,9 @@ MF_INLINE void mf__ibm_unmorton(int kx, int ky, unsigned int c, int *x, int *y)
 
 MF_INLINE int mf__ibm_cell(mf_real v, int b)
 {
-    mf_real f = MF_FLOOR((mf_real)b * (MF_R(0.5) * v + MF_R(0.5)));
-    if (!(f > MF_R(0.0))) return 0;
-    return f >= (mf_real)b ? b - 1 : (int)f;
+    mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
+    if (!(f > MF_R(0.0))) return 0;              /* also NaN */
+    return f >= (mf_real)b ? b - 1 : (int)f;     /* truncation = floor for f > 0 */
 }
 
 /* b*b: the number of bins (those outside the unit disk stay empty). */
@@ -3599,7 +3599,7 @@ static int mf__ibm_bitlen(size_t v)
 }
 
 /* ORs v into field i (w bits) of a zeroed packed array */
-static void mf__ibm_put(unsigned int *base, size_t i, int w, unsigned int v)
+MF_INLINE void mf__ibm_put(unsigned int *base, size_t i, int w, unsigned int v)
 {
     size_t bit = i * (size_t)w;
     unsigned int *p = base + (bit >> 5), s = (unsigned int)(bit & 31u);
@@ -3639,13 +3639,17 @@ static size_t mf__ibm_layout(mf_ibm *ibm, int width, int height, int res, int ra
 /* 4-lane multiplicative hash of the array, the checksum word taken as 0 */
 static unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
 {
-    unsigned int h[4] = { 0x811c9dc5u, 0x01000193u, 0x9e3779b9u, 0x7f4a7c15u };
+    unsigned int h0 = 0x811c9dc5u, h1 = 0x01000193u, h2 = 0x9e3779b9u, h3 = 0x7f4a7c15u;
     size_t i;
-    for (i = 0; i < n; ++i) {
-        unsigned int v = i == MF__IBM_HEADER - 1 ? 0u : w[i];
-        h[i & 3u] = (h[i & 3u] ^ v) * 0x01000193u + (unsigned int)(i >> 2);
+    for (i = 0; i + 4u <= n; i += 4u) {
+        unsigned int v3 = i + 3u == MF__IBM_HEADER - 1 ? 0u : w[i + 3u];
+        h0 = (h0 ^ w[i]) * 0x01000193u + 1u;
+        h1 = (h1 ^ w[i + 1u]) * 0x01000193u + 3u;
+        h2 = (h2 ^ w[i + 2u]) * 0x01000193u + 5u;
+        h3 = (h3 ^ v3) * 0x01000193u + 7u;
     }
-    return h[0] ^ (h[1] * 0x9e3779b1u) ^ (h[2] * 0x85ebca77u) ^ (h[3] * 0xc2b2ae3du);
+    for (; i < n; ++i) h0 = (h0 ^ w[i]) * 0x01000193u + 11u;
+    return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
 }
 
 static void mf__ibm_set_fields(mf_ibm *ibm)
@@ -3689,9 +3693,10 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                                 int resolution, mf_real cut_sigmas)
 {
     mf_ibm L;
-    size_t n, bins, words, i, ncodes;
-    unsigned int *data = 0, *tmp = 0, *cur = 0, *list, *binmap, start = 0u, amask;
+    size_t n, bins, words, i, ncodes, bmw;
+    unsigned int *data = 0, *tmp = 0, *cur = 0, *list, *bmap = 0, *mx = 0, *my = 0, start = 0u, amask;
     double *sums = 0, sxx = 0.0, syy = 0.0;
+    unsigned char tile[64];
     mf_real alpha, cut;
     int res, radius, x, y;
     if (!ibm) return MF_ERROR_INVALID_ARGUMENT;
@@ -3708,40 +3713,68 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     if (!mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n)) return MF_ERROR_INVALID_ARGUMENT;
     ncodes = (size_t)1 << (L.kx + L.ky);
     amask = (1u << L.axis_bits) - 1u;
+    bmw = (n * (size_t)L.bin_bits + 31u) / 32u + 1u;
     tmp = (unsigned int *)MF_MALLOC(ncodes * sizeof(unsigned int));
     cur = (unsigned int *)MF_MALLOC((bins + 1u) * sizeof(unsigned int));
     sums = (double *)MF_MALLOC(2u * bins * sizeof(double));
-    if (!tmp || !cur || !sums) {
-        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
+    bmap = (unsigned int *)MF_MALLOC(bmw * sizeof(unsigned int));
+    mx = (unsigned int *)MF_MALLOC(((size_t)width + (size_t)height) * sizeof(unsigned int));
+    my = mx ? mx + width : 0;
+    if (!tmp || !cur || !sums || !bmap || !mx) {
+        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
         return MF_ERROR_OUT_OF_MEMORY;
     }
-    for (i = 0; i <= bins; ++i) cur[i] = 0u;
-    for (i = 0; i < 2u * bins; ++i) sums[i] = 0.0;
+    for (i = 0; i <= bins; ++i) cur[i] = 0u;   /* sums: set by the first texel of a bin */
+    for (i = 0; i < bmw; ++i) bmap[i] = 0u;
+    for (x = 0; x < width; ++x) mx[x] = mf__ibm_morton(L.kx, L.ky, (unsigned int)x, 0u);
     if (ncodes != n)
         for (i = 0; i < ncodes; ++i) tmp[i] = 0xffffffffu;
-    /* pass 1: validate, bin (Eq. 5.15), count, per-bin sums, slope moments;
-     * every texel's bin (ix | iy << s) goes to its Morton code */
-    for (y = 0; y < height; ++y)
-        for (x = 0; x < width; ++x) {
-            size_t k = (size_t)y * (size_t)width + (size_t)x;
-            const mf_real *nv = normals_xyz + 3u * k;
-            mf_real nx = nv[0], ny = nv[1], nz = nv[2], l2 = nx * nx + ny * ny + nz * nz, il;
-            unsigned int ix, iy, j;
-            if (!(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
-                MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
-                return MF_ERROR_INVALID_DATA;
+    /* pass 1, in 8 x 8 tiles: validate, bin (Eq. 5.15), count, per-bin sums,
+     * the bin map (bins as ix | iy << s); every texel's bin also goes to its
+     * Morton code (the x and y bits of the code are disjoint: OR them). Runs
+     * of one bin (flakes) add up in registers before they reach memory. */
+    for (i = 0; i < (size_t)height; ++i) my[i] = mf__ibm_morton(L.kx, L.ky, 0u, (unsigned int)i);
+    for (i = 0; i < 64u; ++i) tile[i] = (unsigned char)(mf__ibm_compact((unsigned int)i >> 1) | (mf__ibm_compact((unsigned int)i) << 3));
+    for (y = 0; y < height; y += 8)
+        for (x = 0; x < width; x += 8) {
+            unsigned int rj = 0xffffffffu, rc = 0u, q;
+            double rx = 0.0, ry = 0.0;
+            for (q = 0; q <= 64u; ++q) {
+                int tx = x + (int)(tile[q & 63u] & 7u), ty = y + (int)(tile[q & 63u] >> 3);
+                unsigned int ix, iy, j = 0xfffffffeu;
+                mf_real nx = MF_R(0.0), ny = MF_R(0.0);
+                if (q < 64u) {
+                    size_t k = (size_t)ty * (size_t)width + (size_t)tx;
+                    const mf_real *nv = normals_xyz + 3u * k;
+                    mf_real nz, l2, il;
+                    if (tx >= width || ty >= height) continue;
+                    nx = nv[0]; ny = nv[1]; nz = nv[2]; l2 = nx * nx + ny * ny + nz * nz;
+                    if (!(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+                        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
+                        return MF_ERROR_INVALID_DATA;
+                    }
+                    /* 1/sqrt(l2) by two Newton steps from 1 (|l2 - 1| < 1e-3:
+                     * error < 1e-12, no sqrt or division in the hot loop) */
+                    il = MF_R(1.5) - MF_R(0.5) * l2;
+                    il *= MF_R(1.5) - MF_R(0.5) * l2 * il * il;
+                    nx *= il; ny *= il;
+                    ix = (unsigned int)mf__ibm_cell(nx, res); iy = (unsigned int)mf__ibm_cell(ny, res);
+                    j = ix + (unsigned int)res * iy;
+                    mf__ibm_put(bmap, k, L.bin_bits, ix | (iy << L.axis_bits));
+                    tmp[mx[tx] | my[ty]] = ix | (iy << L.axis_bits);
+                }
+                if (j != rj) {
+                    if (rc) {
+                        if (cur[rj]) { sums[2u * rj] += rx; sums[2u * rj + 1u] += ry; }
+                        else { sums[2u * rj] = rx; sums[2u * rj + 1u] = ry; }
+                        cur[rj] += rc;
+                    }
+                    rj = j; rc = 0u; rx = ry = 0.0;
+                }
+                ++rc; rx += (double)nx; ry += (double)ny;
             }
-            il = MF_R(1.0) / MF_SQRT(l2);
-            nx *= il; ny *= il; nz *= il;
-            ix = (unsigned int)mf__ibm_cell(nx, res); iy = (unsigned int)mf__ibm_cell(ny, res);
-            j = ix + (unsigned int)res * iy;
-            ++cur[j];
-            sums[2u * j] += (double)nx;
-            sums[2u * j + 1u] += (double)ny;
-            sxx += (double)(nx / nz) * (double)(nx / nz);
-            syy += (double)(ny / nz) * (double)(ny / nz);
-            tmp[mf__ibm_morton(L.kx, L.ky, (unsigned int)x, (unsigned int)y)] = ix | (iy << L.axis_bits);
         }
+    MF_FREE(mx);
     /* block sizes: n, or n + 2 + 2^k with the top k levels of the kd-tree */
     for (i = 0; i < bins; ++i) {
         unsigned int c = cur[i];
@@ -3750,12 +3783,13 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     words = mf__ibm_layout(&L, width, height, res, radius, start);
     data = words ? (unsigned int *)MF_MALLOC(words * sizeof(unsigned int)) : 0;
     if (!data) {
-        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums);
+        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap);
         return words ? MF_ERROR_OUT_OF_MEMORY : MF_ERROR_INVALID_ARGUMENT;
     }
-    for (i = 0; i < words; ++i) data[i] = 0u;
+    for (i = 0; i < L.bin_at; ++i) data[i] = 0u;
+    for (i = 0; i < bmw; ++i) data[L.bin_at + i] = bmap[i];
+    MF_FREE(bmap);
     list = data + L.pos_at;
-    binmap = data + L.bin_at;
     /* means, quantized inside their bin; the index (Sec. 5.4.4); cur becomes
      * the write cursor of each bin's positions */
     start = 0u;
@@ -3769,6 +3803,12 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
             fy = fy < 0.0 ? 0.0 : (fy > 1.0 ? 1.0 : fy);
             qx = (unsigned int)(fx * 65536.0 + 0.5); qy = (unsigned int)(fy * 65536.0 + 0.5);
             q = ((qx > 65535u ? 65535u : qx) << 16) | (qy > 65535u ? 65535u : qy);
+            {   /* slope moments of the map from the bins' mean normals */
+                double ax = sums[2u * i] / c, ay = sums[2u * i + 1u] / c, z2 = 1.0 - ax * ax - ay * ay;
+                z2 = z2 > 1e-12 ? z2 : 1e-12;
+                sxx += c * ax * ax / z2;
+                syy += c * ay * ay / z2;
+            }
         }
         data[L.mean_at + i] = q;
         mf__ibm_put(data + L.off_at, i, L.off_bits, start);
@@ -3783,15 +3823,20 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     mf__ibm_put(data + L.off_at, bins, L.off_bits, start);
     MF_FREE(sums);
     /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
-     * grouped by bin, each group sorted because the codes come in order -
-     * and the bin map (Eq. 5.15) */
-    for (i = 0; i < ncodes; ++i) {
-        unsigned int v = tmp[i], j;
-        if (v == 0xffffffffu) continue;
-        j = (v & amask) + (unsigned int)res * (v >> L.axis_bits);
-        mf__ibm_put(list, cur[j]++, L.list_bits, (unsigned int)i);
-        mf__ibm_unmorton(L.kx, L.ky, (unsigned int)i, &x, &y);
-        mf__ibm_put(binmap, (size_t)y * (size_t)width + (size_t)x, L.bin_bits, v);
+     * grouped by bin, each group sorted because the codes come in order */
+    {
+        unsigned int rv = 0xffffffffu, rj = 0u, c = 0u;
+        for (i = 0; i < ncodes; ++i) {
+            unsigned int v = tmp[i];
+            if (v == 0xffffffffu) continue;
+            if (v != rv) {   /* runs of one bin keep their cursor in a register */
+                if (rv != 0xffffffffu) cur[rj] = c;
+                rv = v;
+                rj = (v & amask) + (unsigned int)res * (v >> L.axis_bits);
+                c = cur[rj];
+            }
+            mf__ibm_put(list, c++, L.list_bits, (unsigned int)i);
+        }
     }
     MF_FREE(tmp); MF_FREE(cur);
     /* the forest (Sec. 5.4.4): level-k node boundaries of the large bins */
