@@ -2198,7 +2198,7 @@ MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
 #define MF_IBM_MAX_PIECES 64              /* period cells cut by the footprint, exact up to this */
 #define MF_IBM_MIN_AREA MF_R(1e-6)        /* footprints smaller than this (texel^2): point lookup */
 #ifndef MF_IBM_DIRECT_TEXELS
-#define MF_IBM_DIRECT_TEXELS 64           /* direct texel sum (Eq. 5.2) up to this bounding box (bench) */
+#define MF_IBM_DIRECT_TEXELS 2048         /* direct texel sum (Eq. 5.2) up to this bounding box (bench) */
 #endif
 #define MF__IBM_HEADER 16
 #define MF__IBM_STACK 32
@@ -2656,6 +2656,7 @@ MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
  * |dx|, |dy| <= r, that are listed; slot maps a window cell to its list entry. */
 typedef struct mf__ibm_set {
     int cx, cy, r, side, n;
+    int lazy;                        /* bins of the window join when a texel of theirs is met */
     int bin[MF_IBM_MAX_WINDOW];
     short slot[MF_IBM_MAX_WINDOW];
     mf_real w[MF_IBM_MAX_WINDOW];    /* accumulated area, then weight */
@@ -2664,7 +2665,7 @@ typedef struct mf__ibm_set {
 MF_INLINE void mf__ibm_set_init(mf__ibm_set *s, int cx, int cy, int r)
 {
     int i;
-    s->cx = cx; s->cy = cy; s->r = r; s->side = 2 * r + 1; s->n = 0;
+    s->cx = cx; s->cy = cy; s->r = r; s->side = 2 * r + 1; s->n = 0; s->lazy = 0;
     for (i = 0; i < s->side * s->side; ++i) s->slot[i] = -1;
 }
 
@@ -2677,12 +2678,19 @@ MF_INLINE void mf__ibm_set_add(mf__ibm_set *s, int dx, int dy, int j)
     ++s->n;
 }
 
-/* list entry of a bin map value (ix | iy << s), or -1 */
-MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, const mf__ibm_set *s, unsigned int v)
+/* list entry of a bin map value (ix | iy << s), or -1; a lazy set adds the
+ * bin when it is in the neighbourhood (dx^2 + dy^2 <= r (r + 1)) */
+MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, mf__ibm_set *s, unsigned int v)
 {
-    int dx = (int)(v & ((1u << ibm->axis_bits) - 1u)) - s->cx, dy = (int)(v >> ibm->axis_bits) - s->cy;
+    int ix = (int)(v & ((1u << ibm->axis_bits) - 1u)), iy = (int)(v >> ibm->axis_bits);
+    int dx = ix - s->cx, dy = iy - s->cy, k;
     if (dx < -s->r || dx > s->r || dy < -s->r || dy > s->r) return -1;
-    return s->slot[(dy + s->r) * s->side + dx + s->r];
+    k = s->slot[(dy + s->r) * s->side + dx + s->r];
+    if (k < 0 && s->lazy && dx * dx + dy * dy <= s->r * (s->r + 1)) {
+        k = s->n;
+        mf__ibm_set_add(s, dx, dy, ix + ibm->res * iy);
+    }
+    return k;
 }
 
 /* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin). */
@@ -2904,22 +2912,23 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
-    /* candidates: non-empty bins of the neighbourhood facing wo (and wi when
-     * only f is wanted); their weights first, the lobes only where W_j > 0 */
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
     mf__ibm_set_init(&s, cx, cy, r);
-    for (dy = -r; dy <= r; ++dy)
-        for (dx = -r; dx <= r; ++dx) {
-            int j = (cx + dx) + b * (cy + dy);
-            mf_vec3 t;
-            if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-            if (mf_ibm_bin_texels(ibm, j) == 0) continue;
-            t = mf_ibm_bin_normal(ibm, j);
-            if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
-            if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
-            mf__ibm_set_add(&s, dx, dy, j);
-        }
-    if (s.n == 0) return MF_R(0.0);
+    if (p.mode == MF__IBM_POINT || (p.mode == MF__IBM_EXACT && p.direct)) s.lazy = 1;   /* few texels: their bins */
+    else
+        /* the kd traversal needs its bins up front: the non-empty bins of the
+         * neighbourhood that face wo (and wi when only f is wanted) */
+        for (dy = -r; dy <= r; ++dy)
+            for (dx = -r; dx <= r; ++dx) {
+                int j = (cx + dx) + b * (cy + dy);
+                mf_vec3 t;
+                if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
+                if (mf_ibm_bin_texels(ibm, j) == 0) continue;
+                t = mf_ibm_bin_normal(ibm, j);
+                if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
+                if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
+                mf__ibm_set_add(&s, dx, dy, j);
+            }
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
@@ -2927,6 +2936,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
         if (!(s.w[i] > MF_R(0.0))) continue;
         t = mf_ibm_bin_normal(ibm, s.bin[i]);
         co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
+        if (!(co > MF_R(0.0)) || !(ch > MF_R(0.0))) continue;
         xh = mf_cross(h, t); xo = mf_cross(wo, t);
         d = mf_beckmann_D(a, a, mf_vec3_make(MF_SQRT(mf_dot(xh, xh)), MF_R(0.0), ch));
         if (!(d > MF_R(0.0))) continue;
