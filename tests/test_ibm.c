@@ -660,6 +660,176 @@ static void test_sampling_pdf(void)
     free(fl);
 }
 
+/* the builder's checksum, re-implemented to forge buffers whose structure
+ * is broken but whose checksum is right (so the structural checks must fail) */
+static unsigned int forge_checksum(const unsigned int *w, size_t n)
+{
+    unsigned int h0 = 0x811c9dc5u, h1 = 0x01000193u, h2 = 0x9e3779b9u, h3 = 0x7f4a7c15u;
+    size_t i;
+    for (i = 0; i + 4u <= n; i += 4u) {
+        unsigned int v3 = i + 3u == 15u ? 0u : w[i + 3u];
+        h0 = (h0 ^ w[i]) * 0x01000193u + 1u;
+        h1 = (h1 ^ w[i + 1u]) * 0x01000193u + 3u;
+        h2 = (h2 ^ w[i + 2u]) * 0x01000193u + 5u;
+        h3 = (h3 ^ v3) * 0x01000193u + 7u;
+    }
+    for (; i < n; ++i) h0 = (h0 ^ w[i]) * 0x01000193u + 11u;
+    return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
+}
+
+/* packed fields of the documented layout (w bits each, little-end first) */
+static unsigned int field_get(const unsigned int *base, size_t i, int w)
+{
+    unsigned int v = 0u;
+    int b;
+    for (b = 0; b < w; ++b) {
+        size_t bit = i * (size_t)w + (size_t)b;
+        v |= ((base[bit >> 5] >> (bit & 31u)) & 1u) << b;
+    }
+    return v;
+}
+static void field_set(unsigned int *base, size_t i, int w, unsigned int v)
+{
+    int b;
+    for (b = 0; b < w; ++b) {
+        size_t bit = i * (size_t)w + (size_t)b;
+        base[bit >> 5] = (base[bit >> 5] & ~(1u << (bit & 31u))) | (((v >> b) & 1u) << (bit & 31u));
+    }
+}
+
+static void test_save_load(void)
+{
+    const int W = 40, H = 24;
+    mf_real *n = map_flakes(W, H, 3, 0.3, 71);
+    mf_ibm a, b;
+    size_t bytes, i;
+    unsigned char *buf, *cpy;
+    int q, same = 1, bad = 0, k;
+    mft_rng r;
+    char msg[160];
+    for (i = 0; i < (size_t)(W * H); ++i)   /* a flat left half: one bin large enough for a stored kd-tree */
+        if ((int)(i % W) < W / 2) { n[3 * i] = 0; n[3 * i + 1] = 0; n[3 * i + 2] = 1; }
+    mf_ibm_build(&a, n, W, H, MF_R(0.03));
+    bytes = mf_ibm_save(&a, NULL, 0);
+    MFT_CHECK(bytes == mf_ibm_memory_bytes(&a) && bytes > 0, "save: size query");
+    buf = (unsigned char *)malloc(bytes + 1);
+    cpy = (unsigned char *)malloc(bytes + 1);
+    MFT_CHECK(mf_ibm_save(&a, buf, bytes - 1) == bytes, "save: too small a buffer is left alone and the size returned");
+    mf_ibm_save(&a, buf + 1, bytes);   /* an odd address: load copies, so alignment does not matter */
+    MFT_CHECK(mf_ibm_load(&b, buf + 1, bytes) == MF_SUCCESS && b.words == a.words &&
+              memcmp(a.data, b.data, bytes) == 0, "load: round trip is bit-identical");
+    mft_seed(&r, 72);
+    for (q = 0; q < 200; ++q) {
+        mf_footprint f = fp_random(&r, q % 7, W);
+        mf_vec3 wo = mft_dir(1.2 * mft_u01(&r), 6.28 * mft_u01(&r)), wi = mft_dir(1.2 * mft_u01(&r), 6.28 * mft_u01(&r));
+        mf_real pa, pb;
+        if (mf_ibm_brdf_pdf(&a, &f, wo, wi, &pa) != mf_ibm_brdf_pdf(&b, &f, wo, wi, &pb) || pa != pb) same = 0;
+    }
+    MFT_CHECK(same, "load: queries of the loaded map equal the built one's");
+    mf_ibm_release(&b);
+    /* corruption: every header word, bit flips across the array, truncation */
+    for (i = 0; i < 16; ++i) {
+        memcpy(cpy, buf + 1, bytes);
+        cpy[4 * i + (i % 4)] ^= 0x10;
+        if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    }
+    for (k = 0; k < 200; ++k) {
+        size_t at = (size_t)(mft_u01(&r) * (double)bytes);
+        memcpy(cpy, buf + 1, bytes);
+        cpy[at] ^= (unsigned char)(1u << (k % 8));
+        if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    }
+    if (mf_ibm_load(&b, buf + 1, bytes - 4) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    if (mf_ibm_load(&b, buf + 1, bytes - 1) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    if (mf_ibm_load(&b, buf + 1, 12) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    snprintf(msg, sizeof msg, "load: bit flips, header changes and truncation are rejected (%d accepted)", bad);
+    MFT_CHECK(bad == 0, msg);
+    /* broken structure with a valid checksum: the index, a texel position, the
+     * bin map, a kd-tree boundary */
+    bad = 0;
+    for (k = 0; k < 4; ++k) {
+        unsigned int *w;
+        memcpy(cpy, buf + 1, bytes);
+        w = (unsigned int *)(void *)cpy;   /* malloc'd: aligned */
+        if (k == 0) w[a.off_at + 1] ^= 1u;                        /* an index entry */
+        if (k == 1) w[a.pos_at + 3] ^= 1u << 7;                   /* a position or count */
+        if (k == 2) w[a.bin_at + 2] ^= 1u << 2;                   /* the bin map */
+        if (k == 3) w[a.pos_at + 1] ^= 1u << 1;                   /* a tree boundary or position */
+        w[15] = forge_checksum(w, bytes / 4);
+        if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    }
+    /* a kd-tree boundary moved by one inside a large bin (packed fields read
+     * and written here from the documented layout) */
+    for (k = 0; k < mf_ibm_bin_count(&a); ++k)
+        if (mf_ibm_bin_texels(&a, k) >= 4 * MF_IBM_TREE_MIN) break;
+    if (k < mf_ibm_bin_count(&a)) {
+        unsigned int *w, s0, t1, t2;
+        memcpy(cpy, buf + 1, bytes);
+        w = (unsigned int *)(void *)cpy;
+        s0 = field_get(w + a.off_at, (size_t)k, a.off_bits);
+        t1 = field_get(w + a.pos_at, (size_t)s0 + 2u, a.list_bits);
+        t2 = field_get(w + a.pos_at, (size_t)s0 + 3u, a.list_bits);
+        field_set(w + a.pos_at, (size_t)s0 + 2u, a.list_bits, t1 < t2 ? t1 + 1u : t1 - 1u);
+        w[15] = forge_checksum(w, bytes / 4);
+        if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
+    } else ++bad;
+    snprintf(msg, sizeof msg, "load: broken index, positions, bin map and trees rejected even with a valid checksum (%d accepted)", bad);
+    MFT_CHECK(bad == 0, msg);
+    memcpy(cpy, buf + 1, bytes);
+    ((unsigned int *)(void *)cpy)[15] = forge_checksum((unsigned int *)(void *)cpy, bytes / 4);
+    MFT_CHECK(mf_ibm_load(&b, cpy, bytes) == MF_SUCCESS, "load: the re-implemented checksum accepts the intact buffer");
+    mf_ibm_release(&b);
+    MFT_CHECK(mf_ibm_load(NULL, buf, bytes) == MF_ERROR_INVALID_ARGUMENT && mf_ibm_load(&b, NULL, bytes) == MF_ERROR_INVALID_ARGUMENT,
+              "load: NULL arguments");
+    MFT_CHECK(mf_ibm_save(NULL, buf, bytes) == 0, "save: NULL map");
+    mf_ibm_release(&a);
+    free(buf);
+    free(cpy);
+    free(n);
+}
+
+/* degenerate queries: 0 (never NaN), no sample; float-safe huge values */
+static void test_degenerate(void)
+{
+    mf_real *n = map_smooth(16, 16, 0.5, 81);
+    mf_ibm ibm, empty;
+    mf_footprint f = fp_make(0.5, 0.5, 0.1, 0, 0, 0.1), bad[6];
+    mf_vec3 up = mft_dir(0.3, 0.2), down = mft_dir(2.0, 0.0), zero = mf_vec3_make(0, 0, 0);
+    mf_vec3 nanv = mf_vec3_make((mf_real)sqrt(-1.0), 0, 1);
+    int i, j, nonfinite = 0, nonzero = 0;
+    mf_real pdf;
+    double big = MFT_TOL(1e300, 1e30);
+    mf_ibm_build(&ibm, n, 16, 16, MF_R(0.1));
+    empty.data = NULL;
+    bad[0] = fp_make(sqrt(-1.0), 0.5, 0.1, 0, 0, 0.1);
+    bad[1] = fp_make(0.5, 0.5, big, big, -big, big);
+    bad[2] = fp_make(big, -big, 0.1, 0, 0, 0.1);
+    bad[3] = fp_make(0.5, 0.5, 0.1, 0.1, 0.2, 0.2);         /* zero area: point */
+    bad[4] = fp_make(0.5, 0.5, 1e-20, 0, 0, 1e-20);
+    bad[5] = fp_make(-0.0, 1.0, 1e6, 0, 0, 1e-6);
+    for (i = 0; i < 6; ++i)
+        for (j = 0; j < 40; ++j) {
+            mf_vec3 wo = mft_dir(1.55 * (j % 8) / 7.0, j), wi = mft_dir(1.55 * (j / 8) / 4.0, -j);
+            mf_real v = mf_ibm_brdf(&ibm, &bad[i], wo, wi) + mf_ibm_pdf(&ibm, &bad[i], wo, wi);
+            mf_vec3 s = mf_ibm_sample(&ibm, &bad[i], wo, MF_R(0.3), MF_R(0.9), MF_R(1.0), MF_R(0.0));
+            if (!mft_finite((double)v) || !mft_finite((double)s.x + (double)s.y + (double)s.z)) ++nonfinite;
+            if (!mft_finite((double)mf_ibm_bin_weight(&ibm, j, &bad[i]))) ++nonfinite;
+        }
+    MFT_CHECK(nonfinite == 0, "NaN, huge, zero-area and needle footprints: finite results everywhere");
+    if (mf_ibm_brdf(&ibm, &f, down, up) != 0 || mf_ibm_brdf(&ibm, &f, up, down) != 0) ++nonzero;
+    if (mf_ibm_pdf(&ibm, &f, down, up) != 0 || mf_ibm_pdf(&ibm, &f, up, down) != 0) ++nonzero;
+    if (mf_ibm_brdf(&ibm, &f, zero, up) != 0 || mf_ibm_brdf(&ibm, &f, nanv, up) != 0 || mf_ibm_pdf(&ibm, &f, up, nanv) != 0) ++nonzero;
+    if (mf_ibm_sample(&ibm, &f, down, MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).z != 0) ++nonzero;
+    if (mf_ibm_sample(&ibm, NULL, up, MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).z != 0) ++nonzero;
+    if (mf_ibm_brdf(&empty, &f, up, up) != 0 || mf_ibm_brdf(NULL, &f, up, up) != 0 || mf_ibm_pdf(NULL, &f, up, up) != 0) ++nonzero;
+    if (mf_ibm_brdf_pdf(NULL, &f, up, up, &pdf) != 0 || pdf != 0 || mf_ibm_sample(NULL, &f, up, 0, 0, 0, 0).z != 0) ++nonzero;
+    if (mf_ibm_bin_count(NULL) != 0 || mf_ibm_bin_of(NULL, up) != -1 || mf_ibm_texel_bin(NULL, 0, 0) != -1 ||
+        mf_ibm_bin_texels(&ibm, -3) != 0 || mf_ibm_memory_bytes(NULL) != 0) ++nonzero;
+    MFT_CHECK(nonzero == 0, "below the horizon, NULL and empty maps: 0 and no sample");
+    mf_ibm_release(&ibm);
+    free(n);
+}
+
 int test_ibm_dummy;
 
 void test_ibm(void)
@@ -670,4 +840,6 @@ void test_ibm(void)
     test_texel_contribution();
     test_convergence();
     test_sampling_pdf();
+    test_save_load();
+    test_degenerate();
 }
