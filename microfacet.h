@@ -2268,6 +2268,24 @@ typedef struct mf_ibm {
     mf_ndf shadow;              /* distribution of the normal map for G_x (Sec. 3.2.3) */
 } mf_ibm;
 
+/* The checksum of a map's array (mf_ibm_load checks it): a 4-lane
+ * multiplicative hash of the words, the checksum word itself (word 15, lane 3)
+ * taken as 0. */
+MF_INLINE unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
+{
+    unsigned int h0 = 0x811c9dc5u, h1 = 0x01000193u, h2 = 0x9e3779b9u, h3 = 0x7f4a7c15u;
+    size_t i;
+    for (i = 0; i + 4u <= n; i += 4u) {
+        unsigned int v3 = i + 3u == MF__IBM_HEADER - 1 ? 0u : w[i + 3u];
+        h0 = (h0 ^ w[i]) * 0x01000193u + 1u;
+        h1 = (h1 ^ w[i + 1u]) * 0x01000193u + 3u;
+        h2 = (h2 ^ w[i + 2u]) * 0x01000193u + 5u;
+        h3 = (h3 ^ v3) * 0x01000193u + 7u;
+    }
+    for (; i < n; ++i) h0 = (h0 ^ w[i]) * 0x01000193u + 11u;
+    return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
+}
+
 /* one field of `w` bits (w <= 32) of a packed array */
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
@@ -3681,22 +3699,6 @@ static size_t mf__ibm_layout(mf_ibm *ibm, int width, int height, int res, int ra
     words = ibm->bin_at + (n * (size_t)ibm->bin_bits + 31u) / 32u + 1u;
     if (words >= (size_t)0xffffffffu) return 0;
     return words;
-}
-
-/* 4-lane multiplicative hash of the array, the checksum word taken as 0 */
-static unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
-{
-    unsigned int h0 = 0x811c9dc5u, h1 = 0x01000193u, h2 = 0x9e3779b9u, h3 = 0x7f4a7c15u;
-    size_t i;
-    for (i = 0; i + 4u <= n; i += 4u) {
-        unsigned int v3 = i + 3u == MF__IBM_HEADER - 1 ? 0u : w[i + 3u];
-        h0 = (h0 ^ w[i]) * 0x01000193u + 1u;
-        h1 = (h1 ^ w[i + 1u]) * 0x01000193u + 3u;
-        h2 = (h2 ^ w[i + 2u]) * 0x01000193u + 5u;
-        h3 = (h3 ^ v3) * 0x01000193u + 7u;
-    }
-    for (; i < n; ++i) h0 = (h0 ^ w[i]) * 0x01000193u + 11u;
-    return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
 }
 
 static void mf__ibm_set_fields(mf_ibm *ibm)

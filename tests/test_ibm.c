@@ -553,13 +553,16 @@ static void test_convergence(void)
     free(n);
 }
 
-/* probability of each half-vector cell (the bins split sub x sub) under
- * mf_ibm_pdf: the integral over the cell of pdf(wi(h)) 4 (wo.h) / h.z dhx dhy,
- * 4 x 4 Gauss-Legendre nodes; returns the total */
-static double pdf_cells(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, int sub, double *prob)
+/* Integral over wi of g(wi), split into half-vector cells (the bins split
+ * sub x sub): the integral over each cell of g(wi(h)) 4 (wo.h) / h.z dhx dhy,
+ * 4 x 4 Gauss-Legendre nodes, so that the bin edges (where the neighbourhood
+ * changes) are cell edges. Writes each cell's share to prob (if not NULL),
+ * returns the total. */
+typedef double (*wi_fn)(mf_vec3 wi, void *ctx);
+static double h_cells(int res, int sub, mf_vec3 wo, wi_fn g, void *ctx, double *prob)
 {
     double gx[4], gw[4], tot = 0;
-    int nc = ibm->res * sub, cx, cy, i, j;
+    int nc = res * sub, cx, cy, i, j;
     mft_gl(4, gx, gw);
     for (cy = 0; cy < nc; ++cy)
         for (cx = 0; cx < nc; ++cx) {
@@ -579,12 +582,35 @@ static double pdf_cells(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, in
                         if (c <= 0) continue;
                         wi = mf_normalize(mf_reflect(wo, h));
                         if (!(wi.z > 0)) continue;
-                        p += gw[i] * gw[j] * d * d * (double)mf_ibm_pdf(ibm, f, wo, wi) * 4 * c / hz;
+                        p += gw[i] * gw[j] * d * d * g(wi, ctx) * 4 * c / hz;
                     }
-            prob[cy * nc + cx] = p;
+            if (prob) prob[cy * nc + cx] = p;
             tot += p;
         }
     return tot;
+}
+
+/* what h_cells integrates: the pdf, the IBM BRDF cos, or the BRDF cos
+ * summed over every bin (weights wbin, Eq. 5.7 without the truncation) */
+typedef struct { const mf_ibm *ibm; const mf_footprint *f; mf_vec3 wo; const double *wbin; } q_ctx;
+static double q_pdf(mf_vec3 wi, void *ctx)
+{
+    const q_ctx *q = (const q_ctx *)ctx;
+    return (double)mf_ibm_pdf(q->ibm, q->f, q->wo, wi);
+}
+static double q_brdf_cos(mf_vec3 wi, void *ctx)
+{
+    const q_ctx *q = (const q_ctx *)ctx;
+    return (double)mf_ibm_brdf(q->ibm, q->f, q->wo, wi) * (double)wi.z;
+}
+static double q_all_bins_cos(mf_vec3 wi, void *ctx)
+{
+    const q_ctx *q = (const q_ctx *)ctx;
+    double v = 0;
+    int j;
+    for (j = 0; j < mf_ibm_bin_count(q->ibm); ++j)
+        if (q->wbin[j] > 0) v += q->wbin[j] * texel_C(q->ibm->alpha, NULL, q->wo, wi, mf_ibm_bin_normal(q->ibm, j));
+    return v * (double)wi.z;
 }
 
 /* sampling against the pdf: chi-square, pdf > 0 on samples, eval/pdf in one
@@ -595,9 +621,11 @@ static void check_sampling(const char *name, const mf_ibm *ibm, const mf_footpri
     int nc = ibm->res * sub, i, dof, got = 0, zero_pdf = 0, bad_pair = 0;
     double *prob = (double *)malloc(sizeof(double) * (size_t)(nc * nc + 1));
     double *obs = (double *)calloc((size_t)(nc * nc + 1), sizeof(double)), tot, z, frac, se;
+    q_ctx qc;
     mft_rng r;
     char msg[240];
-    tot = pdf_cells(ibm, f, wo, sub, prob);
+    qc.ibm = ibm; qc.f = f; qc.wo = wo; qc.wbin = NULL;
+    tot = h_cells(ibm->res, sub, wo, q_pdf, &qc, prob);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
         mf_vec3 wi = mf_ibm_sample(ibm, f, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
@@ -658,23 +686,6 @@ static void test_sampling_pdf(void)
     mf_ibm_release(&c);
     free(s);
     free(fl);
-}
-
-/* the builder's checksum, re-implemented to forge buffers whose structure
- * is broken but whose checksum is right (so the structural checks must fail) */
-static unsigned int forge_checksum(const unsigned int *w, size_t n)
-{
-    unsigned int h0 = 0x811c9dc5u, h1 = 0x01000193u, h2 = 0x9e3779b9u, h3 = 0x7f4a7c15u;
-    size_t i;
-    for (i = 0; i + 4u <= n; i += 4u) {
-        unsigned int v3 = i + 3u == 15u ? 0u : w[i + 3u];
-        h0 = (h0 ^ w[i]) * 0x01000193u + 1u;
-        h1 = (h1 ^ w[i + 1u]) * 0x01000193u + 3u;
-        h2 = (h2 ^ w[i + 2u]) * 0x01000193u + 5u;
-        h3 = (h3 ^ v3) * 0x01000193u + 7u;
-    }
-    for (; i < n; ++i) h0 = (h0 ^ w[i]) * 0x01000193u + 11u;
-    return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
 }
 
 /* packed fields of the documented layout (w bits each, little-end first) */
@@ -755,7 +766,7 @@ static void test_save_load(void)
         if (k == 1) w[a.pos_at + 3] ^= 1u << 7;                   /* a position or count */
         if (k == 2) w[a.bin_at + 2] ^= 1u << 2;                   /* the bin map */
         if (k == 3) w[a.pos_at + 1] ^= 1u << 1;                   /* a tree boundary or position */
-        w[15] = forge_checksum(w, bytes / 4);
+        w[15] = mf__ibm_checksum(w, bytes / 4);
         if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
     }
     /* a kd-tree boundary moved by one inside a large bin (packed fields read
@@ -770,14 +781,14 @@ static void test_save_load(void)
         t1 = field_get(w + a.pos_at, (size_t)s0 + 2u, a.list_bits);
         t2 = field_get(w + a.pos_at, (size_t)s0 + 3u, a.list_bits);
         field_set(w + a.pos_at, (size_t)s0 + 2u, a.list_bits, t1 < t2 ? t1 + 1u : t1 - 1u);
-        w[15] = forge_checksum(w, bytes / 4);
+        w[15] = mf__ibm_checksum(w, bytes / 4);
         if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
     } else ++bad;
     snprintf(msg, sizeof msg, "load: broken index, positions, bin map and trees rejected even with a valid checksum (%d accepted)", bad);
     MFT_CHECK(bad == 0, msg);
     memcpy(cpy, buf + 1, bytes);
-    ((unsigned int *)(void *)cpy)[15] = forge_checksum((unsigned int *)(void *)cpy, bytes / 4);
-    MFT_CHECK(mf_ibm_load(&b, cpy, bytes) == MF_SUCCESS, "load: the re-implemented checksum accepts the intact buffer");
+    ((unsigned int *)(void *)cpy)[15] = mf__ibm_checksum((unsigned int *)(void *)cpy, bytes / 4);
+    MFT_CHECK(mf_ibm_load(&b, cpy, bytes) == MF_SUCCESS, "load: a recomputed checksum of the intact buffer is accepted");
     mf_ibm_release(&b);
     MFT_CHECK(mf_ibm_load(NULL, buf, bytes) == MF_ERROR_INVALID_ARGUMENT && mf_ibm_load(&b, NULL, bytes) == MF_ERROR_INVALID_ARGUMENT,
               "load: NULL arguments");
@@ -831,37 +842,7 @@ static void test_degenerate(void)
 }
 
 /* the truncation of Eq. 5.13 measured: directional albedo of the IBM BRDF
- * (21 bins) against the same binned BRDF summed over every bin (Eq. 5.7),
- * both by quadrature over half-vector cells aligned with the bins */
-static double albedo_cells(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, const double *wbin, int full)
-{
-    double gx[4], gw[4], tot = 0;
-    int nc = ibm->res, cx, cy, i, j, q, nb = mf_ibm_bin_count(ibm);
-    mft_gl(4, gx, gw);
-    for (cy = 0; cy < nc; ++cy)
-        for (cx = 0; cx < nc; ++cx) {
-            double x0 = -1 + 2.0 * cx / nc, y0 = -1 + 2.0 * cy / nc, d = 2.0 / nc;
-            for (i = 0; i < 4; ++i)
-                for (j = 0; j < 4; ++j) {
-                    double hx = x0 + d * gx[i], hy = y0 + d * gx[j], r2 = hx * hx + hy * hy, hz, c, fv = 0;
-                    mf_vec3 h, wi;
-                    if (r2 >= 1) continue;
-                    hz = sqrt(1 - r2);
-                    h = mf_vec3_make((mf_real)hx, (mf_real)hy, (mf_real)hz);
-                    c = (double)mf_dot(wo, h);
-                    if (c <= 0) continue;
-                    wi = mf_normalize(mf_reflect(wo, h));
-                    if (!(wi.z > 0)) continue;
-                    if (!full) fv = (double)mf_ibm_brdf(ibm, f, wo, wi);
-                    else
-                        for (q = 0; q < nb; ++q)
-                            if (wbin[q] > 0) fv += wbin[q] * texel_C(ibm->alpha, NULL, wo, wi, mf_ibm_bin_normal(ibm, q));
-                    tot += gw[i] * gw[j] * d * d * fv * (double)wi.z * 4 * c / hz;
-                }
-        }
-    return tot;
-}
-
+ * (21 bins) against the same binned BRDF summed over every bin (Eq. 5.7) */
 static void test_truncation(void)
 {
     const int W = 32;
@@ -884,7 +865,12 @@ static void test_truncation(void)
         for (i = 0; i < W * W; ++i) wb[mf_ibm_texel_bin(&ibm, i % W, i / W)] += wk[i];
         for (k = 0; k < 3; ++k) {
             mf_vec3 wo = mft_dir(0.6 * k, 0.7);
-            double at = albedo_cells(&ibm, &f, wo, wb, 0), af = albedo_cells(&ibm, &f, wo, wb, 1), tr = 1 - at / af;
+            q_ctx qc;
+            double at, af, tr;
+            qc.ibm = &ibm; qc.f = &f; qc.wo = wo; qc.wbin = wb;
+            at = h_cells(ibm.res, 1, wo, q_brdf_cos, &qc, NULL);
+            af = h_cells(ibm.res, 1, wo, q_all_bins_cos, &qc, NULL);
+            tr = 1 - at / af;
             if (mft_verbose) printf("    truncation %s theta_o %.1f: albedo %.5f of %.5f (%.2f%%)\n", names[m], 0.6 * k, at, af, 100 * tr);
             worst = fmax(worst, fabs(tr));
             mean += tr; ++cnt;
