@@ -2526,8 +2526,8 @@ MF_INLINE int mf__ibm_slab(const mf_ibm *ibm, const mf__ibm_fp *p, int row, mf_r
 /* Columns of a slab: all cells [*c0, *c1] it touches and the full ones
  * [*f0, *f1] (empty when *f1 < *f0): cells whose whole square lies inside A,
  * i.e. inside both chords of A at the slab's bottom and top (A is convex). */
-MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, const mf__ibm_fp *p, int row, const mf_real *x, const mf_real *y,
-                                    int n, mf_real *c0, mf_real *c1, mf_real *f0, mf_real *f1)
+MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, int row, const mf_real *x, const mf_real *y, int n, mf_real *c0,
+                                    mf_real *c1, mf_real *f0, mf_real *f1)
 {
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, y0 = (mf_real)row * H, y1 = (mf_real)(row + 1) * H;
     mf_real lo = x[0], hi = x[0], l0 = MF_BIG, r0 = -MF_BIG, l1 = MF_BIG, r1 = -MF_BIG;
@@ -2537,7 +2537,6 @@ MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, const mf__ibm_fp *p, int 
         if (y[i] == y0) { l0 = mf_min(l0, x[i]); r0 = mf_max(r0, x[i]); }
         if (y[i] == y1) { l1 = mf_min(l1, x[i]); r1 = mf_max(r1, x[i]); }
     }
-    (void)p;
     *c0 = MF_FLOOR(lo / W);
     *c1 = MF_FLOOR(hi / W);
     if (*c1 > *c0 && hi == *c1 * W) *c1 -= MF_R(1.0);   /* touches the next column only on its edge */
@@ -2592,7 +2591,7 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         mf_real c0, c1, f0, f1, nf = MF_R(0.0);
         int n = mf__ibm_slab(ibm, p, row, xs, ys);
         if (n < 3) continue;
-        mf__ibm_slab_columns(ibm, p, row, xs, ys, n, &c0, &c1, &f0, &f1);
+        mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
         if (f1 >= f0) { nf = f1 - f0 + MF_R(1.0); p->full += nf; }
         pieces += (int)(c1 - c0 + MF_R(1.0) - nf);
         if (pieces > MF_IBM_MAX_PIECES) { p->full = MF_R(0.0); return; }
@@ -2881,7 +2880,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         for (row = p->row0; row <= p->row1; ++row) {
             int n = mf__ibm_slab(ibm, p, row, xs, ys);
             if (n < 3) continue;
-            mf__ibm_slab_columns(ibm, p, row, xs, ys, n, &c0, &c1, &f0, &f1);
+            mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
             for (col = c0; col <= c1; col += MF_R(1.0)) {
                 if (col >= f0 && col <= f1) continue;
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
