@@ -119,8 +119,178 @@ static void bench_tabulated(void)
 }
 
 /* ---- Inverse Bin Map ---- */
+/* A car-paint flake map (thesis Sec. 5.5.4, Fig. 5.10): Voronoi flakes around
+ * a jittered grid of `cell` texels, tiling, each flake's normal drawn from
+ * GTR (alpha 0.002, gamma 1.5), normals below 0.2 clamped up. */
+static mf_real *ibm_flake_map(int n, int cell)
+{
+    int g = n / cell, x, y, i;
+    mf_ndf gtr = mf_gtr(MF_R(0.002), MF_R(1.5));
+    mf_real *m = (mf_real *)malloc(sizeof(mf_real) * 3 * (size_t)n * (size_t)n);
+    float *sx = (float *)malloc(sizeof(float) * (size_t)(g * g)), *sy = (float *)malloc(sizeof(float) * (size_t)(g * g));
+    mf_vec3 *fn = (mf_vec3 *)malloc(sizeof(mf_vec3) * (size_t)(g * g));
+    if (!m || !sx || !sy || !fn) { free(m); free(sx); free(sy); free(fn); return NULL; }
+    for (i = 0; i < g * g; ++i) {
+        mf_vec3 t = mf_sample_D(&gtr, rnd(), rnd());
+        if (t.z < MF_R(0.2)) t = mf_normalize(mf_vec3_make(t.x, t.y, MF_R(0.2)));
+        fn[i] = t;
+        sx[i] = (float)((i % g) + (double)rnd()) * (float)cell;
+        sy[i] = (float)((i / g) + (double)rnd()) * (float)cell;
+    }
+    for (y = 0; y < n; ++y)
+        for (x = 0; x < n; ++x) {
+            int cx = x / cell, cy = y / cell, dx, dy, best = 0;
+            float bd = 1e30f;
+            for (dy = -1; dy <= 1; ++dy)
+                for (dx = -1; dx <= 1; ++dx) {
+                    int gx = (cx + dx + g) % g, gy = (cy + dy + g) % g, k = gy * g + gx;
+                    float ox = sx[k] + (float)((cx + dx) - gx) * (float)cell - ((float)x + 0.5f);
+                    float oy = sy[k] + (float)((cy + dy) - gy) * (float)cell - ((float)y + 0.5f);
+                    if (ox * ox + oy * oy < bd) { bd = ox * ox + oy * oy; best = k; }
+                }
+            m[3 * ((size_t)y * n + x)] = fn[best].x;
+            m[3 * ((size_t)y * n + x) + 1] = fn[best].y;
+            m[3 * ((size_t)y * n + x) + 2] = fn[best].z;
+        }
+    free(sx); free(sy); free(fn);
+    return m;
+}
+
+/* |P ∩ texel [x, x+1] x [y, y+1]|, P a convex counterclockwise polygon */
+static double ibm_clip_area(const double *px, const double *py, double x0, double y0)
+{
+    double xa[12], ya[12], xb[12], yb[12], s = 0.0;
+    int i, k, e, m = 4;
+    for (i = 0; i < 4; ++i) { xa[i] = px[i]; ya[i] = py[i]; }
+    for (e = 0; e < 4 && m > 0; ++e) {
+        int o = 0;
+        for (i = 0; i < m; ++i) {
+            int j = (i + 1) % m;
+            double di = e == 0 ? xa[i] - x0 : e == 1 ? x0 + 1 - xa[i] : e == 2 ? ya[i] - y0 : y0 + 1 - ya[i];
+            double dj = e == 0 ? xa[j] - x0 : e == 1 ? x0 + 1 - xa[j] : e == 2 ? ya[j] - y0 : y0 + 1 - ya[j];
+            if (di >= 0) { xb[o] = xa[i]; yb[o] = ya[i]; ++o; }
+            if ((di >= 0) != (dj >= 0)) {
+                double t = di / (di - dj);
+                xb[o] = xa[i] + t * (xa[j] - xa[i]); yb[o] = ya[i] + t * (ya[j] - ya[i]); ++o;
+            }
+        }
+        m = o;
+        for (k = 0; k < m; ++k) { xa[k] = xb[k]; ya[k] = yb[k]; }
+    }
+    for (i = 0; i < m; ++i) s += xa[i] * ya[(i + 1) % m] - xa[(i + 1) % m] * ya[i];
+    return 0.5 * fabs(s);
+}
+
+/* The baseline: the plain texel sum of Eq. 5.2 - every texel of the
+ * footprint's bounding box, its exact overlap, C with its own normal (the
+ * same Beckmann flake lobe and G_x as the IBM, G_x computed once). */
+static double ibm_brute(const mf_real *nm, int n, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real alpha,
+                        const mf_ndf *shadow)
+{
+    double px[4], py[4], cx = (double)f->u * n, cy = (double)f->v * n, ax = (double)f->ax * n, ay = (double)f->ay * n;
+    double bx = (double)f->bx * n, by = (double)f->by * n, x0, x1, y0, y1, sum = 0.0, area = fabs(ax * by - ay * bx), gx;
+    mf_vec3 h = mf_normalize(mf_add(wo, wi));
+    int x, y;
+    px[0] = cx - 0.5 * ax - 0.5 * bx; py[0] = cy - 0.5 * ay - 0.5 * by;
+    px[1] = cx + 0.5 * ax - 0.5 * bx; py[1] = cy + 0.5 * ay - 0.5 * by;
+    px[2] = cx + 0.5 * ax + 0.5 * bx; py[2] = cy + 0.5 * ay + 0.5 * by;
+    px[3] = cx - 0.5 * ax + 0.5 * bx; py[3] = cy - 0.5 * ay + 0.5 * by;
+    x0 = fmin(fmin(px[0], px[1]), fmin(px[2], px[3])); x1 = fmax(fmax(px[0], px[1]), fmax(px[2], px[3]));
+    y0 = fmin(fmin(py[0], py[1]), fmin(py[2], py[3])); y1 = fmax(fmax(py[0], py[1]), fmax(py[2], py[3]));
+    gx = 1.0 / (1.0 + (double)mf_lambda(shadow, wo) + (double)mf_lambda(shadow, wi));
+    for (y = (int)floor(y0); y < (int)ceil(y1); ++y)
+        for (x = (int)floor(x0); x < (int)ceil(x1); ++x) {
+            double a = ibm_clip_area(px, py, x, y);
+            const mf_real *t;
+            mf_vec3 tn;
+            mf_real co, ci, ch, d;
+            if (!(a > 0.0)) continue;
+            t = nm + 3 * ((size_t)(((y % n) + n) % n) * (size_t)n + (size_t)(((x % n) + n) % n));
+            tn = mf_vec3_make(t[0], t[1], t[2]);
+            co = mf_dot(wo, tn); ci = mf_dot(wi, tn); ch = mf_dot(h, tn);
+            if (!(co > 0) || !(ci > 0) || !(ch > 0)) continue;
+            {
+                mf_vec3 xh = mf_cross(h, tn), xo = mf_cross(wo, tn), xi = mf_cross(wi, tn);
+                d = mf_beckmann_D(alpha, alpha, mf_vec3_make(MF_SQRT(mf_dot(xh, xh)), MF_R(0.0), ch));
+                if (!(d > 0)) continue;
+                sum += a * (double)d / (1.0 + (double)mf_beckmann_lambda(alpha, alpha, mf_vec3_make(MF_SQRT(mf_dot(xo, xo)), 0, co)) +
+                                        (double)mf_beckmann_lambda(alpha, alpha, mf_vec3_make(MF_SQRT(mf_dot(xi, xi)), 0, ci)));
+            }
+        }
+    return sum * gx / (area * 4.0 * (double)wo.z * (double)wi.z);
+}
+
+/* IBM on a 2048^2 flake map for the thesis' flake roughnesses (Table 5.5):
+ * build time and memory; BRDF eval for footprints of 1, 1e2, 1e4 and 1e6
+ * texels against the plain texel sum (ratio = IBM / baseline); pdf and
+ * sampling. Directions: wo within 60 degrees, wi the mirror of wo about a
+ * GTR flake normal, so that the queries hit glints. */
 static void bench_ibm(void)
 {
+    const int n = 2048, nq = 256;
+    const double alphas[4] = { 0.0025, 0.01, 0.04, 0.16 }, texels[4] = { 1.0, 1e2, 1e4, 1e6 };
+    mf_real *nm = ibm_flake_map(n, 6);
+    mf_ndf gtr = mf_gtr(MF_R(0.002), MF_R(1.5));
+    mf_footprint fq[nq];
+    mf_vec3 wo[nq], wi[nq];
+    int a, k, q, it;
+    if (!nm) return;
+    for (q = 0; q < nq; ++q) {
+        mf_vec3 m = mf_sample_D(&gtr, rnd(), rnd());
+        wo[q] = rnd_dir(MF_R(1.05));
+        wi[q] = mf_reflect(wo[q], m);
+        if (!(wi[q].z > MF_R(0.05))) { wo[q] = mf_vec3_make(0, 0, 1); wi[q] = mf_reflect(wo[q], m); }
+    }
+    for (a = 0; a < 4; ++a) {
+        mf_ibm ibm;
+        double t0, t1, best = 1e30;
+        char name[64];
+        for (it = 0; it < 3; ++it) {
+            t0 = now_ns();
+            if (mf_ibm_build(&ibm, nm, n, n, (mf_real)alphas[a]) != MF_SUCCESS) { free(nm); return; }
+            t1 = now_ns();
+            if (t1 - t0 < best) best = t1 - t0;
+            if (it < 2) mf_ibm_release(&ibm);
+        }
+        mf_ibm_set_shadowing(&ibm, &gtr);   /* G_x: the flakes' GTR (Sec. 5.5.4) */
+        snprintf(name, sizeof name, "ibm_build_2048_a%g", alphas[a]);
+        printf("bench %s %.0f ms=%.1f MB=%.1f bins=%d^2\n", name, best, best * 1e-6,
+               (double)mf_ibm_memory_bytes(&ibm) / (1024.0 * 1024.0), ibm.res);
+        for (k = 0; k < 4; ++k) {
+            double side = sqrt(texels[k]) / n, tib = 1e30, tbr = 1e30, tpdf = 1e30, tsam = 1e30, s = 0.0;
+            int nb = texels[k] >= 1e6 ? 2 : (texels[k] >= 1e4 ? 16 : nq), r;
+            for (q = 0; q < nq; ++q) {
+                double ang = 6.283185307179586 * (double)rnd();
+                fq[q].u = rnd(); fq[q].v = rnd();
+                fq[q].ax = (mf_real)(side * cos(ang)); fq[q].ay = (mf_real)(side * sin(ang));
+                fq[q].bx = (mf_real)(-side * sin(ang)); fq[q].by = (mf_real)(side * cos(ang));
+            }
+            for (r = 0; r < 3; ++r) {
+                t0 = now_ns();
+                for (q = 0; q < nq; ++q) s += (double)mf_ibm_brdf(&ibm, &fq[q], wo[q], wi[q]);
+                t1 = now_ns(); if ((t1 - t0) / nq < tib) tib = (t1 - t0) / nq;
+                for (q = 0; q < nq; ++q) s += (double)mf_ibm_pdf(&ibm, &fq[q], wo[q], wi[q]);
+                t0 = now_ns(); if ((t0 - t1) / nq < tpdf) tpdf = (t0 - t1) / nq;
+                for (q = 0; q < nq; ++q) s += (double)mf_ibm_sample(&ibm, &fq[q], wo[q], rnd(), rnd(), rnd(), rnd()).z;
+                t1 = now_ns(); if ((t1 - t0) / nq < tsam) tsam = (t1 - t0) / nq;
+            }
+            t0 = now_ns();
+            for (q = 0; q < nb; ++q) s += ibm_brute(nm, n, &fq[q], wo[q], wi[q], ibm.alpha, &gtr);
+            t1 = now_ns();
+            tbr = (t1 - t0) / nb;
+            {   /* the same queries through the IBM, for a like-for-like ratio */
+                double tsub;
+                t0 = now_ns();
+                for (q = 0; q < nb; ++q) s += (double)mf_ibm_brdf(&ibm, &fq[q], wo[q], wi[q]);
+                tsub = (now_ns() - t0) / nb;
+                printf("bench ibm_eval_a%g_texels%g %.0f brute=%.0f ratio=%.4f pdf=%.0f sample=%.0f\n", alphas[a], texels[k],
+                       tib, tbr, tsub / tbr, tpdf, tsam);
+            }
+            g_sink += s;
+        }
+        mf_ibm_release(&ibm);
+    }
+    free(nm);
 }
 
 /* ---- microsurface generation and the gonioreflectometer ---- */

@@ -33,7 +33,22 @@ __global__ void mf_kernel(const float *u, float *out, int n)
         mf_ndf ld = mf_leadr_ndf(la);
         r += mf_leadr_specular(la, wo, wi) + mf_sample_visible(&ld, wo, MF_R(0.3), MF_R(0.4)).z + mf_lambda(&ld, wo);
     }
-    { /* Inverse Bin Map */
+    { /* Inverse Bin Map: the queries only read the map's array, a device
+         * pointer in a real kernel (a copy of the host struct pointing at it);
+         * compiled here, never run */
+        const mf_ibm *ibm_dev = (const mf_ibm *)(const void *)(u + n);
+        mf_ibm ibm;
+        mf_footprint f;
+        mf_real pdf;
+        int bins[MF_IBM_MAX_WINDOW];
+        mf_real w[MF_IBM_MAX_WINDOW];
+        ibm = *ibm_dev;
+        f.u = (mf_real)u[i]; f.v = MF_R(0.5); f.ax = MF_R(0.01); f.ay = MF_R(0.0); f.bx = MF_R(0.0); f.by = MF_R(0.01);
+        r += mf_ibm_brdf(&ibm, &f, wo, wi) + mf_ibm_pdf(&ibm, &f, wo, wi) + mf_ibm_brdf_pdf(&ibm, &f, wo, wi, &pdf);
+        r += mf_ibm_sample(&ibm, &f, wo, (mf_real)u[i], MF_R(0.2), MF_R(0.3), MF_R(0.4)).z + pdf;
+        r += mf_ibm_bin_weight(&ibm, mf_ibm_bin_of(&ibm, wo), &f) + (mf_real)mf_ibm_bin_count(&ibm);
+        r += (mf_real)mf_ibm_neighbourhood_weights(&ibm, &f, mf_ibm_texel_bin(&ibm, 1, 2), bins, w);
+        r += mf_ibm_bin_normal(&ibm, 0).z + (mf_real)mf_ibm_bin_texels(&ibm, 0);
     }
     out[i] = (float)r;
 }

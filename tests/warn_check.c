@@ -86,6 +86,29 @@ int main(void)
         mf_tabulated_release(&t2);
     }
     { /* Inverse Bin Map */
+        mf_real nm[4 * 4 * 3];
+        mf_ibm ibm, ld;
+        mf_footprint f;
+        int bins[MF_IBM_MAX_WINDOW], q;
+        mf_real w[MF_IBM_MAX_WINDOW], pdf = MF_R(0.0);
+        unsigned char buf[4096];
+        size_t nb;
+        for (q = 0; q < 16; ++q) { nm[3 * q] = MF_R(0.0); nm[3 * q + 1] = MF_R(0.6) * (mf_real)(q & 1); nm[3 * q + 2] = (q & 1) ? MF_R(0.8) : MF_R(1.0); }
+        f.u = MF_R(0.5); f.v = MF_R(0.5); f.ax = MF_R(0.5); f.ay = MF_R(0.0); f.bx = MF_R(0.1); f.by = MF_R(0.5);
+        if (mf_ibm_build(&ibm, nm, 4, 4, MF_R(0.1)) == MF_SUCCESS &&
+            mf_ibm_build_ex(&ld, nm, 4, 4, MF_R(0.1), 0, MF_R(3.0)) == MF_SUCCESS) {
+            mf_ibm_release(&ld);
+            mf_ibm_set_shadowing(&ibm, &k[2]);
+            s += mf_ibm_brdf(&ibm, &f, wo, wi) + mf_ibm_pdf(&ibm, &f, wo, wi) + mf_ibm_brdf_pdf(&ibm, &f, wo, wi, &pdf);
+            s += mf_ibm_sample(&ibm, &f, wo, MF_R(0.1), MF_R(0.2), MF_R(0.3), MF_R(0.4)).z + pdf;
+            s += mf_ibm_bin_weight(&ibm, mf_ibm_bin_of(&ibm, wo), &f) + (mf_real)mf_ibm_bin_count(&ibm);
+            s += (mf_real)mf_ibm_neighbourhood_weights(&ibm, &f, mf_ibm_texel_bin(&ibm, 1, 2), bins, w);
+            s += mf_ibm_bin_normal(&ibm, mf_ibm_texel_bin(&ibm, 0, 0)).z + (mf_real)mf_ibm_bin_texels(&ibm, 0);
+            s += (mf_real)mf_ibm_memory_bytes(&ibm);
+            nb = mf_ibm_save(&ibm, buf, sizeof buf);
+            if (nb <= sizeof buf && mf_ibm_load(&ld, buf, nb) == MF_SUCCESS) mf_ibm_release(&ld);
+            mf_ibm_release(&ibm);
+        }
     }
     { /* microsurface generation, gonioreflectometer */
         mf_real hm[8 * 8], gr[2 * 8 * 8], sw[8 * 8], mod[64], zl, zh, pl, ph;
