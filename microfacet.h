@@ -1,5 +1,5 @@
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
- * Version 0.1.0.  MIT licensed (see the end of this file).
+ * Version 0.2.0.  MIT licensed (see the end of this file).
  *
  * QUICK START
  *
@@ -21,7 +21,8 @@
  *   == 2. Vectors and frames
  *   == 3. Fresnel
  *   == 4. Special functions (erf inverse, incomplete beta, stable helpers)
- *   == 5. Distributions: Beckmann, GGX, GTR, Student-t; the value type mf_ndf
+ *   == 5. Distributions: Beckmann, GGX, GTR, Student-t, tabulated
+ *         (piecewise-linear, builders in section 14); the value type mf_ndf
  *   == 6. Linearly transformed microsurfaces: any 2x2 transform of any
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 7. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
@@ -112,7 +113,7 @@
 #define MICROFACET_H
 
 #define MF_VERSION_MAJOR 0
-#define MF_VERSION_MINOR 1
+#define MF_VERSION_MINOR 2
 #define MF_VERSION_PATCH 0
 
 /* ======================================================================== */

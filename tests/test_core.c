@@ -45,5 +45,5 @@ void test_core(void)
     MFT_CHECK(worst < MFT_TOL(1e-13, 2e-6), "incomplete beta closed forms");
     MFT_CHECK(!strcmp(mf_result_string(MF_SUCCESS), "success"), "mf_result_string");
     MFT_CHECK(strcmp(mf_result_string(MF_ERROR_INVALID_ARGUMENT), "unknown result") != 0, "error names");
-    MFT_CHECK(MF_VERSION_MAJOR == 0 && MF_VERSION_MINOR == 1, "version macros");
+    MFT_CHECK(MF_VERSION_MAJOR == 0 && MF_VERSION_MINOR == 2 && MF_VERSION_PATCH == 0, "version macros");
 }
