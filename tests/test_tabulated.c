@@ -343,6 +343,22 @@ static void test_bad_input(void)
     MFT_CHECK(mf_tabulated_build(&t, unord, v, NULL, 4) == MF_ERROR_INVALID_DATA && t.block == NULL, "build: unordered angles");
     MFT_CHECK(mf_tabulated_build(&t, shortend, v, NULL, 4) == MF_ERROR_INVALID_DATA && t.block == NULL, "build: angles not reaching pi/2");
     MFT_CHECK(mf_tabulated_from_ndf(&t, NULL, 64) == MF_ERROR_INVALID_ARGUMENT && t.block == NULL, "from_ndf: NULL ndf");
+    {   /* angles closer than the precision, and ends that snapping would reorder */
+        mf_real close[4] = { 0, (mf_real)MFT_TOL(1e-16, 1e-9), MF_R(0.5), MF_R(1.5707963267948966) };
+        mf_real near1[4] = { 0, (mf_real)MFT_TOL(1e-12, 1e-5), MF_R(0.5), MF_R(1.5707963267948966) };
+        mf_ndf dn;
+        mf_real low[4] = { MF_R(-9e-5), MF_R(-1e-5), MF_R(0.5), MF_R(1.5707963267948966) };
+        mf_real high[4] = { 0, MF_R(0.5), MF_R(1.5707963267948966) + MF_R(1e-5), MF_R(1.5707963267948966) + MF_R(9e-5) };
+        MFT_CHECK(mf_tabulated_build(&t, close, v, NULL, 4) == MF_ERROR_INVALID_DATA && t.block == NULL, "build: angles closer than 16 ulps");
+        MFT_CHECK(mf_tabulated_build(&t, near1, v, NULL, 4) == MF_SUCCESS, "build: angles a few hundred ulps apart");
+        dn = mf_tabulated_ndf(&t);
+        MFT_CHECK(mft_finite(mf_lambda(&dn, mf_vec3_make(1, 0, 0))) && mft_finite(mf_lambda(&dn, mft_dir(1.5707963, 0))),
+                  "close angles: Lambda finite on the table's nodes");
+        mf_tabulated_release(&t);
+        MFT_CHECK(mf_tabulated_build(&t, low, v, NULL, 4) == MF_ERROR_INVALID_DATA && t.block == NULL, "build: first angles reordered by snapping");
+        MFT_CHECK(mf_tabulated_build(&t, high, v, NULL, 4) == MF_ERROR_INVALID_DATA && t.block == NULL, "build: last angles reordered by snapping");
+        MFT_CHECK(mf_tabulated_build(&t, th, v, NULL, MF_TABULATED_MAX_POINTS + 1) == MF_ERROR_INVALID_ARGUMENT, "build: n above the maximum");
+    }
     MFT_CHECK(mf_tabulated_build(&t, th, v, NULL, 4) == MF_SUCCESS, "build: constant curve");
     d = mf_tabulated_ndf(&t);
     MFT_NEAR(mf_D(&d, w), 1.0 / PI, MFT_TOL(1e-12, 1e-6), 0, "constant curve is the uniform 1/pi");
@@ -378,6 +394,22 @@ static void test_rebase(void)
         mf_real u1 = (mf_real)mft_u01(&r), u2 = (mf_real)mft_u01(&r);
         mf_vec3 s1 = mf_sample_visible(&a, v, u1, u2), s2 = mf_sample_visible(&b, v, u1, u2);
         if (mf_D(&a, v) != mf_D(&b, v) || mf_lambda(&a, v) != mf_lambda(&b, v) || s1.x != s2.x || s1.z != s2.z) same = 0;
+    }
+    {   /* Lambda and visible samples are scale-free in the view (transforms pass M^-1 w) */
+        int scale_ok = 1;
+        mft_seed(&r, 6);
+        for (i = 0; i < 100; ++i) {
+            mf_vec3 v = mft_dir(1.55 * mft_u01(&r), 6.28 * mft_u01(&r));
+            mf_real u1 = (mf_real)mft_u01(&r), u2 = (mf_real)mft_u01(&r), l = mf_lambda(&a, v);
+            mf_vec3 s1 = mf_sample_visible(&a, v, u1, u2);
+            int k;
+            for (k = 0; k < 2; ++k) {
+                mf_vec3 vs = mf_scale(v, k ? MF_R(1e-20) : MF_R(1e20)), s2 = mf_sample_visible(&a, vs, u1, u2);
+                if (fabs(mf_lambda(&a, vs) - l) > MFT_TOL(1e-9, 1e-4) * (1.0 + l) || fabs(s2.x - s1.x) + fabs(s2.z - s1.z) > MFT_TOL(1e-9, 1e-4))
+                    scale_ok = 0;
+            }
+        }
+        MFT_CHECK(scale_ok, "Lambda and visible samples unchanged when the view is scaled by 1e20 or 1e-20");
     }
     mf_tabulated_release(&t);
     memset(&t, 0, sizeof t);   /* the copy must not refer to the original */
