@@ -45,6 +45,7 @@
  *     finite, 0, no sample).
  * Maps are 8^2 to 64^2, the module takes about 2 s (double, -O2). */
 #include "mf_test.h"
+#include "quad.h"
 #include <stdlib.h>
 
 #define PI_D 3.14159265358979323846
@@ -798,10 +799,12 @@ static void test_save_load(void)
     /* broken structure with a valid checksum: the index, a texel position, the
      * bin map, a kd-tree boundary */
     bad = 0;
-    for (k = 0; k < 4; ++k) {
+    for (k = 0; k < 6; ++k) {
         unsigned int *w;
+        float fa = k == 4 ? 1e-20f : 3e4f;
         memcpy(cpy, buf + 1, bytes);
         w = (unsigned int *)(void *)cpy;   /* malloc'd: aligned */
+        if (k >= 4) memcpy(&w[7], &fa, 4);                         /* alpha outside the builder's clamp */
         if (k == 0) w[a.off_at + 1] ^= 1u;                        /* an index entry */
         if (k == 1) w[a.pos_at + 3] ^= 1u << 7;                   /* a position or count */
         if (k == 2) w[a.bin_at + 2] ^= 1u << 2;                   /* the bin map */
@@ -824,7 +827,7 @@ static void test_save_load(void)
         w[15] = mf__ibm_checksum(w, bytes / 4);
         if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
     } else ++bad;
-    snprintf(msg, sizeof msg, "load: broken index, positions, bin map and trees rejected even with a valid checksum (%d accepted)", bad);
+    snprintf(msg, sizeof msg, "load: broken index, positions, bin map, trees and alpha rejected even with a valid checksum (%d accepted)", bad);
     MFT_CHECK(bad == 0, msg);
     memcpy(cpy, buf + 1, bytes);
     ((unsigned int *)(void *)cpy)[15] = mf__ibm_checksum((unsigned int *)(void *)cpy, bytes / 4);
@@ -932,8 +935,68 @@ static void test_truncation(void)
 
 int test_ibm_dummy;
 
+/* Slivers (a parallelogram 1e-6 to 1e-3 texel thick, 1 to 30 long) on a
+ * checkerboard of two bins: the weights equal the fractions of the center
+ * line's length in each bin (its zero-thickness limit, computed here exactly
+ * from the line's crossings of the texel grid), within 2e-3 + the thickness in
+ * double and 1e-2 in float, where slivers thinner than 64 ulps of the map size
+ * are widened to that (before, float round-off gave weights of 500). */
+static void test_slivers(void)
+{
+    enum { S = 64 };
+    mf_real *nm = (mf_real *)malloc(sizeof(mf_real) * 3 * S * S);
+    mf_ibm ibm;
+    mft_rng r;
+    int i, k, bad = 0, b0, b1;
+    double worst = 0.0;
+    for (i = 0; i < S * S; ++i) {
+        int odd = ((i % S) + (i / S)) & 1;
+        nm[3 * i] = odd ? MF_R(0.28) : MF_R(0.0); nm[3 * i + 1] = MF_R(0.0);
+        nm[3 * i + 2] = odd ? (mf_real)sqrt(1.0 - 0.28 * 0.28) : MF_R(1.0);
+    }
+    MFT_CHECK(mf_ibm_build(&ibm, nm, S, S, MF_R(0.05)) == MF_SUCCESS, "slivers: checkerboard map builds");
+    b0 = mf_ibm_texel_bin(&ibm, 0, 0); b1 = mf_ibm_texel_bin(&ibm, 1, 0);
+    MFT_CHECK(b0 != b1, "slivers: the checkerboard has two bins");
+    mft_seed(&r, 515);
+    for (k = 0; k < 400; ++k) {
+        double L = 1.0 + 29.0 * mft_u01(&r), th = pow(10.0, -6.0 + 3.0 * mft_u01(&r)), ang = 6.283185307 * mft_u01(&r);
+        double cx = S * mft_u01(&r), cy = S * mft_u01(&r), dx = L * cos(ang), dy = L * sin(ang), ts[256], even = 0.0;
+        int nt = 0, q;
+        mf_footprint f;
+        double w0, w1, e;
+        if (k % 4 == 0) { cx = S - 1e-4 * mft_u01(&r); }   /* at the period edge */
+        f.u = (mf_real)(cx / S); f.v = (mf_real)(cy / S);
+        f.ax = (mf_real)(dx / S); f.ay = (mf_real)(dy / S);
+        f.bx = (mf_real)(-th * sin(ang) / S); f.by = (mf_real)(th * cos(ang) / S);
+        /* the line from c - d/2 to c + d/2, as the parameters where it crosses grid lines */
+        cx = (double)f.u * S; cy = (double)f.v * S; dx = (double)f.ax * S; dy = (double)f.ay * S;
+        ts[nt++] = 0.0; ts[nt++] = 1.0;
+        for (q = (int)floor(fmin(cx - dx / 2, cx + dx / 2)); q <= (int)ceil(fmax(cx - dx / 2, cx + dx / 2)) && nt < 250; ++q)
+            if (dx != 0.0) { double t = (q - (cx - dx / 2)) / dx; if (t > 0 && t < 1) ts[nt++] = t; }
+        for (q = (int)floor(fmin(cy - dy / 2, cy + dy / 2)); q <= (int)ceil(fmax(cy - dy / 2, cy + dy / 2)) && nt < 250; ++q)
+            if (dy != 0.0) { double t = (q - (cy - dy / 2)) / dy; if (t > 0 && t < 1) ts[nt++] = t; }
+        mft_median(ts, nt);   /* sorts */
+        for (q = 0; q + 1 < nt; ++q) {
+            double tm = 0.5 * (ts[q] + ts[q + 1]), x = cx - dx / 2 + tm * dx, y = cy - dy / 2 + tm * dy;
+            long tx = (long)floor(x), ty = (long)floor(y);
+            if (((tx + ty) % 2 + 2) % 2 == 0) even += ts[q + 1] - ts[q];
+        }
+        w0 = mf_ibm_bin_weight(&ibm, b0, &f); w1 = mf_ibm_bin_weight(&ibm, b1, &f);
+        e = fabs(w0 - even) + fabs(w1 - (1.0 - even));
+        if (e > worst) worst = e;
+        if (!(e <= MFT_TOL(2e-3 + 2.0 * th, 1e-2))) {
+            if (bad++ < 3) printf("    sliver L=%.3g thick=%.3g: weights %.6g %.6g, line fractions %.6g %.6g\n", L, th, w0, w1, even, 1.0 - even);
+        }
+    }
+    if (mft_verbose) printf("    slivers: worst L1 against the line fractions %.3g\n", worst);
+    MFT_CHECK(bad == 0, "sliver footprints: weights are the line's length fractions");
+    mf_ibm_release(&ibm);
+    free(nm);
+}
+
 void test_ibm(void)
 {
+    test_slivers();
     test_build_errors();
     test_structure();
     test_weights();
