@@ -3771,7 +3771,7 @@ typedef struct mf_microsurface_stats {
     mf_real below;           /* fraction of cells with eps <= threshold at the end */
     mf_real eps_mean;        /* mean of eps over the cells at the end */
     mf_real eps_median;
-    int rematched;           /* cells re-matched by the last iteration */
+    int rematched;           /* cells above the threshold at the end (0 without iterations) */
     mf_real rms_target;      /* RMS of the sampled slopes |Q_m| (both components) */
     mf_real rms_central;     /* RMS of the central-difference slopes of the result */
     mf_real rms_triangle;    /* RMS of the triangle slopes of the result */
@@ -3803,7 +3803,10 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
  * Rays start uniformly over one period, wrap around it and march the cells
  * with a 2D DDA; intersections are exact (the height above the surface is
  * linear on each triangle piece of the path). Rays still bouncing after
- * max_bounces are counted as lost, with their power. */
+ * max_bounces, or still crossing the surface after 64 size + 65536 squares in
+ * one flight, are counted as lost, with their power: at incidence within
+ * about 0.001 rad of the horizon most rays are (a flight from the top of the
+ * surface then spans more squares than that). */
 #define MF_FACET_MIRROR 0
 #define MF_FACET_LAMBERT 1
 typedef struct mf_gonio_config {
@@ -3824,7 +3827,7 @@ typedef struct mf_gonio {
     mf_real *first;          /* per cell: power fraction leaving after exactly one bounce */
     mf_real *multi;          /* per cell: after two bounces or more */
     int rays;                /* rays traced by the last measurement */
-    int lost;                /* rays still on the surface after max_bounces */
+    int lost;                /* rays still on the surface after max_bounces or the step budget */
     int leaks;               /* rays found below the surface and put back (rounding; should be 0) */
     mf_real energy_first, energy_multi, energy_lost;   /* totals, fractions of the incident power */
     mf_real mean_bounces;    /* mean number of bounces per ray */
