@@ -4411,10 +4411,10 @@ MFDEF mf_result mf_tabulated_from_ndf(mf_tabulated *t, const mf_ndf *d, int n)
     /* candidates: half uniform in theta, half at tan(theta) = s tan(pi q / 2), merged */
     for (i = 0; i < M / 2; ++i) cth[i] = hpi * (mf_real)i / (mf_real)(M / 2 - 1);
     for (i = M / 2; i < M; ++i) cth[i] = MF_ATAN(scale * MF_TAN(hpi * (mf_real)(i - M / 2 + 1) / (mf_real)(M - M / 2 + 1)));
-    for (i = 1; i < M; ++i) {   /* insertion sort of two sorted halves */
-        mf_real v = cth[i];
-        for (j = i - 1; j >= 0 && cth[j] > v; --j) cth[j + 1] = cth[j];
-        cth[j + 1] = v;
+    {   /* merge the two sorted halves (through err, free until phase 2) */
+        int a = 0, b = M / 2, k = 0;
+        while (a < M / 2 || b < M) err[k++] = b >= M || (a < M / 2 && cth[a] <= cth[b]) ? cth[a++] : cth[b++];
+        for (i = 0; i < M; ++i) cth[i] = err[i];
     }
     for (i = 1, m = 1; i < M; ++i)
         if (mf__tab_gap_ok(cth[m - 1], cth[i])) cth[m++] = cth[i];
