@@ -835,6 +835,17 @@ MF_INLINE mf_real mf__tab_D_angles(const mf_tabulated *t, mf_real theta, mf_real
     return c2 * t->wx * vx + (MF_R(1.0) - c2) * t->wy * mf__tab_curve(t, t->dy, i, theta);
 }
 
+/* Eq. 10 as P + Q cos(2 phi) at theta in control segment i (mf__tab_lambda):
+ * P = (wx D_x + wy D_y) / 2, Q = (wx D_x - wy D_y) / 2; one curve: P = D_x, Q = 0. */
+MF_INLINE void mf__tab_PQ(const mf_tabulated *t, int i, mf_real theta, mf_real *P, mf_real *Q)
+{
+    mf_real vx = mf__tab_curve(t, t->dx, i, theta), vy;
+    if (!t->aniso) { *P = vx; *Q = MF_R(0.0); return; }
+    vy = mf__tab_curve(t, t->dy, i, theta);
+    *P = MF_R(0.5) * (t->wx * vx + t->wy * vy);
+    *Q = MF_R(0.5) * (t->wx * vx - t->wy * vy);
+}
+
 /* Tabulated D, homogeneous of degree -4 in wm. */
 MF_SLOW mf_real mf__tab_D(const mf_ndf *d, mf_vec3 wm)
 {
@@ -1198,12 +1209,19 @@ MF_INLINE mf_real mf__tab_I(const mf_tabulated *t, int j, int k, mf_real to)
            (MF_R(3.0) * s2 - MF_R(2.0) * s3) * b[k] + (s3 - s2) * h * b[k + 1];
 }
 
+/* The projected area I0 + cos(2 phi_o) I2 of the table at theta_o (k2 = cos 2 phi_o). */
+MF_INLINE mf_real mf__tab_area(const mf_tabulated *t, mf_real to, mf_real k2)
+{
+    int j = mf__tab_find(t->lt, t->n_lam, t->inv_hl, to);
+    mf_real I = mf__tab_I(t, j, 0, to);
+    return t->aniso ? I + k2 * mf__tab_I(t, j, 2, to) : I;
+}
+
 /* Symmetric in w.z like the other kinds; scale-free in w (transforms pass M^-1 w). */
 MF_SLOW mf_real mf__tab_lambda(const mf_ndf *d, mf_vec3 w)
 {
     const mf_tabulated *t = d->tab;
     mf_real s2, z, to, I, co;
-    int j;
     if (!t) return MF_R(0.0);
     z = mf_max(mf_max(MF_FABS(w.x), MF_FABS(w.y)), MF_FABS(w.z));   /* scale-free: bring w near unit length */
     if (!(z > MF_R(0.0)) || !(z < MF_BIG)) return MF_R(0.0);
@@ -1212,9 +1230,7 @@ MF_SLOW mf_real mf__tab_lambda(const mf_ndf *d, mf_vec3 w)
     z = MF_FABS(w.z);
     if (!(s2 > MF_R(0.0))) return MF_R(0.0);
     to = MF_ATAN2(MF_SQRT(s2), z);
-    j = mf__tab_find(t->lt, t->n_lam, t->inv_hl, to);
-    I = mf__tab_I(t, j, 0, to);
-    if (t->aniso) I += (w.x * w.x - w.y * w.y) / s2 * mf__tab_I(t, j, 2, to);   /* cos(2 phi_o) */
+    I = mf__tab_area(t, to, (w.x * w.x - w.y * w.y) / s2);
     co = mf_max(z / MF_SQRT(s2 + z * z), MF_R(1e-15));
     return mf_clamp(I / co - MF_R(1.0), MF_R(0.0), MF_BIG);
 }
@@ -1750,9 +1766,8 @@ MF_INLINE void mf__tab_outer(const mf_tabulated *t, int i, mf_real ta, mf_real t
             mf_real xi = ng == 4 ? mf__gl4_xi(g) : mf__gl_xi(g), gw = ng == 4 ? mf__gl4_w(g) : mf__gl_w(g);
             mf_real u = ((mf_real)p + MF_R(0.5) + MF_R(0.5) * xi) / (mf_real)np;
             mf_real th = subst ? ta + L * u * u : ta + L * u, wgt = gw / (mf_real)np * (subst ? MF_R(2.0) * L * u : L);
-            mf_real vx = mf__tab_curve(t, t->dx, i, th), vy = t->aniso ? mf__tab_curve(t, t->dy, i, th) : vx;
-            mf_real P = t->aniso ? MF_R(0.5) * (t->wx * vx + t->wy * vy) : vx, Q = MF_R(0.5) * (t->wx * vx - t->wy * vy);
-            mf_real sn = MF_SIN(th), cs = MF_COS(th), a = so * sn, b = co * cs, j0, j2;
+            mf_real sn = MF_SIN(th), cs = MF_COS(th), a = so * sn, b = co * cs, j0, j2, P, Q;
+            mf__tab_PQ(t, i, th, &P, &Q);
             mf__tab_J(a, b, &j0, &j2);
             wgt *= sn;
             out[0] += wgt * P * j0;
@@ -1797,18 +1812,18 @@ MF_INLINE mf_real mf__tab_G(mf_real psi, mf_real a, mf_real b, mf_real P, mf_rea
 MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_tabulated *t = d->tab;
-    mf_real s2, len, so, co, cp = MF_R(1.0), sp = MF_R(0.0), tc, mxw, myw, cin, inner, outer, target;
-    mf_real o[4], th, sn, a, b, vx, vy, P, Q, psi, cps, sps, lastm = MF_R(0.0);
+    mf_real s2, len, so, co, cp = MF_R(1.0), sp = MF_R(0.0), k2, tc, mxw, myw, cin, inner, outer, target;
+    mf_real o[4], th, sn, a, b, P, Q, psi, cps, sps, lastm = MF_R(0.0);
     int k, j, i, nseg, last = 0;
     if (!t || !(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     len = mf_max(mf_max(MF_FABS(w.x), MF_FABS(w.y)), w.z);   /* scale-free: bring w near unit length */
     if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     w = mf_scale(w, MF_R(1.0) / len);
     s2 = w.x * w.x + w.y * w.y;
-    len = MF_SQRT(s2 + w.z * w.z);
-    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    len = MF_SQRT(s2 + w.z * w.z);   /* in [1, sqrt 3] */
     so = MF_SQRT(s2) / len; co = w.z / len;
     if (s2 > MF_R(0.0)) { cp = w.x / MF_SQRT(s2); sp = w.y / MF_SQRT(s2); }
+    k2 = cp * cp - sp * sp;   /* cos(2 phi_o) */
     u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
     u2 = mf_clamp(u2, MF_R(0.0), MF_R(1.0));
     tc = MF_R(0.5) * MF_PI - MF_ATAN2(MF_SQRT(s2), w.z);
@@ -1820,10 +1835,7 @@ MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     /* the total from the projected-area table (what D_visible divides by, to
      * its interpolation error ~1e-9); the outer segments are integrated one by
      * one from theta_c until the target is reached */
-    j = mf__tab_find(t->lt, t->n_lam, t->inv_hl, MF_R(0.5) * MF_PI - tc);
-    outer = mf__tab_I(t, j, 0, MF_R(0.5) * MF_PI - tc);
-    if (t->aniso) outer += (cp * cp - sp * sp) * mf__tab_I(t, j, 2, MF_R(0.5) * MF_PI - tc);
-    outer -= inner;
+    outer = mf__tab_area(t, MF_R(0.5) * MF_PI - tc, k2) - inner;
     target = u1 * (inner + mf_max(outer, MF_R(0.0)));
     nseg = t->n - 1 - k;
     if (target <= inner || !(outer > MF_R(0.0))) {
@@ -1833,7 +1845,7 @@ MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
         mf_real rem = target - inner, lo, hi, ta, m = MF_R(0.0);
         for (j = 0; j < nseg; ++j) {
             mf__tab_outer(t, k + j, j == 0 ? tc : t->theta[k + j], t->theta[k + j + 1], so, co, j == 0, 0, o);
-            m = o[0] + (cp * cp - sp * sp) * o[1];
+            m = o[0] + k2 * o[1];
             if (rem <= m) break;
             if (m > MF_R(0.0)) { last = j; lastm = m; }
             rem -= m;
@@ -1843,33 +1855,29 @@ MF_SLOW mf_vec3 mf__tab_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
         lo = ta; hi = t->theta[k + j + 1];
         th = ta + (hi - ta) * mf_clamp(rem / mf_max(m, MF_TINY), MF_R(0.0), MF_R(1.0));
         for (i = 0; i < 60; ++i) {
-            mf_real f, df, ss = MF_SIN(th), jj0, jj2, ux, uy;
+            mf_real f, ss = MF_SIN(th), jj0, jj2;
             mf__tab_outer(t, k + j, ta, th, so, co, j == 0, 0, o);
-            f = o[0] + (cp * cp - sp * sp) * o[1] - rem;
-            ux = mf__tab_curve(t, t->dx, k + j, th); uy = t->aniso ? mf__tab_curve(t, t->dy, k + j, th) : ux;
-            mf__tab_J(so * ss, co * MF_COS(th), &jj0, &jj2);
-            df = ss * (t->aniso ? MF_R(0.5) * ((t->wx * ux + t->wy * uy) * jj0 + (cp * cp - sp * sp) * (t->wx * ux - t->wy * uy) * jj2) : ux * jj0);
-            if (mf__newton_step(&th, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + th))) break;
+            f = o[0] + k2 * o[1] - rem;
+            mf__tab_PQ(t, k + j, th, &P, &Q);
+            mf__tab_J(so * ss, co * MF_COS(th), &jj0, &jj2);   /* the derivative: the integrand at th */
+            if (mf__newton_step(&th, f, ss * (P * jj0 + k2 * Q * jj2), &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + th))) break;
         }
     }
     /* phi given theta */
     sn = MF_SIN(th);
     a = so * sn; b = co * MF_COS(th);
-    j = mf__tab_find(t->theta, t->n, t->inv_h, th);
-    vx = mf__tab_curve(t, t->dx, j, th);
-    vy = t->aniso ? mf__tab_curve(t, t->dy, j, th) : vx;
-    if (!t->aniso || !(vx + vy > MF_R(0.0))) {
+    mf__tab_PQ(t, mf__tab_find(t->theta, t->n, t->inv_h, th), th, &P, &Q);
+    if (!t->aniso || !(P > MF_R(0.0))) {
         psi = mf__sample_phi_cos(a > MF_R(1e-30) * b ? b / a : MF_R(1e30), u2);
     } else {
-        mf_real pmax = a > b ? MF_ACOS(-b / a) : MF_PI, lo = -pmax, hi = pmax, g0, g1, tg, c2o = cp * cp - sp * sp, s2o = MF_R(2.0) * cp * sp;
-        P = MF_R(0.5) * (t->wx * vx + t->wy * vy); Q = MF_R(0.5) * (t->wx * vx - t->wy * vy);
-        g0 = mf__tab_G(-pmax, a, b, P, Q * c2o, Q * s2o);
-        g1 = mf__tab_G(pmax, a, b, P, Q * c2o, Q * s2o);
+        mf_real pmax = a > b ? MF_ACOS(-b / a) : MF_PI, lo = -pmax, hi = pmax, g0, g1, tg, s2o = MF_R(2.0) * cp * sp;
+        g0 = mf__tab_G(-pmax, a, b, P, Q * k2, Q * s2o);
+        g1 = mf__tab_G(pmax, a, b, P, Q * k2, Q * s2o);
         tg = g0 + u2 * (g1 - g0);
         psi = -pmax + MF_R(2.0) * pmax * u2;
         for (i = 0; i < 60; ++i) {
-            mf_real f = mf__tab_G(psi, a, b, P, Q * c2o, Q * s2o) - tg;
-            mf_real df = (a * MF_COS(psi) + b) * (P + Q * (c2o * MF_COS(MF_R(2.0) * psi) - s2o * MF_SIN(MF_R(2.0) * psi)));
+            mf_real f = mf__tab_G(psi, a, b, P, Q * k2, Q * s2o) - tg;
+            mf_real df = (a * MF_COS(psi) + b) * (P + Q * (k2 * MF_COS(MF_R(2.0) * psi) - s2o * MF_SIN(MF_R(2.0) * psi)));
             if (mf__newton_step(&psi, f, mf_max(df, MF_R(0.0)), &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + MF_FABS(psi)))) break;
         }
     }
