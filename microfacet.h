@@ -376,6 +376,17 @@ MF_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
     return mf_vec3_make(a.m00 * v.x + a.m10 * v.y, a.m01 * v.x + a.m11 * v.y, v.z);
 }
 
+/* A direction with density max(0, w.z) / pi (cosine-weighted hemisphere,
+ * Malley's method) from u1, u2 in [0, 1]. */
+MF_INLINE mf_vec3 mf__sample_cosine(mf_real u1, mf_real u2)
+{
+    mf_real r, phi;
+    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    r = MF_SQRT(u1);
+    phi = MF_R(2.0) * MF_PI * u2;
+    return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));
+}
+
 /* Tangent frame (t, b) around a unit normal n, branchless and singularity-free
  * (Duff et al. 2017, "Building an Orthonormal Basis, Revisited"). */
 MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
@@ -2469,9 +2480,7 @@ MF_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
 /* A direction with density mf_ltc_eval: a cosine-distributed direction moved by M. */
 MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 {
-    mf_real r = MF_SQRT(mf_clamp(u1, MF_R(0.0), MF_R(1.0))), phi = MF_R(2.0) * MF_PI * u2;
-    mf_vec3 w = mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));
-    return mf_normalize(mf__mat3_apply(l->M, w));
+    return mf_normalize(mf__mat3_apply(l->M, mf__sample_cosine(u1, u2)));
 }
 
 /* Integral of the cosine lobe's vector irradiance over the great arc from a to
@@ -4131,10 +4140,7 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
         for (j = 0; j < 8 * n1; ++j) {
             mf_real u1 = ((mf_real)i + MF_R(0.5)) / (mf_real)(8 * n1), u2 = ((mf_real)j + MF_R(0.5)) / (mf_real)(8 * n1), f, pdf, w;
             mf_vec3 wi, h;
-            if (brdf) {
-                mf_real r = MF_SQRT(u1), phi = MF_R(2.0) * MF_PI * u2;
-                wi = mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(MF_R(1.0) - u1));
-            } else wi = mf_brdf_sample(d, c.wo, u1, u2);
+            wi = brdf ? mf__sample_cosine(u1, u2) : mf_brdf_sample(d, c.wo, u1, u2);
             f = mf__fit_f(&c, wi);
             pdf = mf__fit_pdf(&c, wi);
             w = pdf > MF_R(0.0) ? f / pdf : MF_R(0.0);
@@ -5955,12 +5961,11 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
                 w *= (double)c->albedo;
                 if (c->facet == MF_FACET_MIRROR) dir = mf_normalize(mf_reflect(mf_scale(dir, MF_R(-1.0)), m));
                 else {   /* cosine-distributed about the facet normal */
-                    mf_vec3 tt, bb;
+                    mf_vec3 tt, bb, l;
                     mf_real u1 = mf__u01_real(mf__pcg_u01(&rng)), u2 = mf__u01_real(mf__pcg_u01(&rng));
-                    mf_real rr = MF_SQRT(u1), ph = MF_R(2.0) * MF_PI * u2;
+                    l = mf__sample_cosine(u1, u2);
                     mf_frame(m, &tt, &bb);
-                    dir = mf_normalize(mf_add(mf_add(mf_scale(tt, rr * MF_COS(ph)), mf_scale(bb, rr * MF_SIN(ph))),
-                                              mf_scale(m, MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))))));
+                    dir = mf_normalize(mf_add(mf_add(mf_scale(tt, l.x), mf_scale(bb, l.y)), mf_scale(m, l.z)));
                 }
                 if (!(w > 0.0)) { bounces += (double)hits; done = 1; }   /* absorbed */
             }
