@@ -14,9 +14,26 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 
-.PHONY: all test test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check
+.PHONY: all test test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
+        header header-check ltc-table
 
 all: test
+
+# ---- the single header is generated from the module sources src/*.h
+SRC_MODULES := $(sort $(wildcard src/*.h))
+header:
+	@sh tools/amalgamate.sh > microfacet.h.tmp && mv microfacet.h.tmp microfacet.h
+	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/"
+# make test runs this: the committed header must be what the generator makes
+header-check:
+	@sh tools/amalgamate.sh | cmp -s - microfacet.h || \
+	  { echo "microfacet.h differs from src/: edit src/, run 'make header', commit both"; exit 1; }
+
+# the built-in LTC table module, refitted (about N minutes on one core)
+ltc-table: | $(BUILD)
+	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/ltc_fit.c -o $(BUILD)/ltc_fit -lm
+	./$(BUILD)/ltc_fit --module > src/14_ltc_table.h.tmp && mv src/14_ltc_table.h.tmp src/14_ltc_table.h
+	@$(MAKE) --no-print-directory header
 
 $(BUILD):
 	@mkdir -p $(BUILD)

@@ -1,5 +1,9 @@
 /* The library in the other precision (this file is compiled with the opposite
- * of the test binary's mf_real), behind a double interface, for test_float. */
+ * of the test binary's mf_real), behind a double interface, for test_float.
+ * It holds that precision's implementation: every test binary is a program
+ * using both precisions, which links because non-inline symbols carry their
+ * precision (mf_..._f32 / mf_..._f64). */
+#define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
 #include "ref_other.h"
 

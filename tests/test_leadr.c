@@ -218,7 +218,7 @@ static mf_vec3 env_smooth(mf_vec3 wi, mf_real solid_angle, void *ctx)
 static double dense(mf_leadr a, mf_vec3 wo, int mode, mf_vec3 wl)
 {
     mf_ndf d = mf_leadr_ndf(a);
-    double gx[8], gw[8], sum = 0, sx = sqrt((double)d.c[MF__LD_VX]), sy = sqrt((double)d.c[MF__LD_VY]);
+    double gx[8], gw[8], sum = 0, sx = sqrt((double)d.p.leadr.vx), sy = sqrt((double)d.p.leadr.vy);
     double lo = mf_lambda(&d, wo), proj = (double)wo.z - a.E_x * wo.x - a.E_y * wo.y;
     int i, j, pi, pj;
     const int P = 60;

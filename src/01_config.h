@@ -1,0 +1,228 @@
+/* @decl */
+#define MF_VERSION_MAJOR 0
+#define MF_VERSION_MINOR 3
+#define MF_VERSION_PATCH 0
+
+/* ======================================================================== */
+/* == 1. Configuration and portability                                      */
+/* ======================================================================== */
+/* mf_real and its literals, the math-call macros, storage classes (MF_INLINE
+ * hot paths, MF_COLD device-callable cold paths, MFDEF builders), the
+ * allocator pair, the module opt-outs and the precision-tagged symbol names. */
+
+#if defined(MF_MALLOC) && !defined(MF_FREE)
+#error "microfacet.h: MF_MALLOC is defined but MF_FREE is not; define both or neither"
+#endif
+#if defined(MF_FREE) && !defined(MF_MALLOC)
+#error "microfacet.h: MF_FREE is defined but MF_MALLOC is not; define both or neither"
+#endif
+
+#include <math.h>
+#include <stddef.h>
+
+#ifdef MF_USE_DOUBLE
+typedef double mf_real;
+#define MF_R(x) (x)
+#ifndef MF_SQRT
+#define MF_SQRT(x) sqrt(x)
+#endif
+#ifndef MF_EXP
+#define MF_EXP(x) exp(x)
+#endif
+#ifndef MF_EXPM1
+#define MF_EXPM1(x) expm1(x)
+#endif
+#ifndef MF_LOG
+#define MF_LOG(x) log(x)
+#endif
+#ifndef MF_LOG1P
+#define MF_LOG1P(x) log1p(x)
+#endif
+#ifndef MF_POW
+#define MF_POW(x, y) pow(x, y)
+#endif
+#ifndef MF_SIN
+#define MF_SIN(x) sin(x)
+#endif
+#ifndef MF_COS
+#define MF_COS(x) cos(x)
+#endif
+#ifndef MF_ACOS
+#define MF_ACOS(x) acos(x)
+#endif
+#ifndef MF_ATAN2
+#define MF_ATAN2(y, x) atan2(y, x)
+#endif
+#ifndef MF_ERF
+#define MF_ERF(x) erf(x)
+#endif
+#ifndef MF_ERFC
+#define MF_ERFC(x) erfc(x)
+#endif
+#ifndef MF_LGAMMA
+#define MF_LGAMMA(x) lgamma(x)
+#endif
+#ifndef MF_FABS
+#define MF_FABS(x) fabs(x)
+#endif
+#ifndef MF_FLOOR
+#define MF_FLOOR(x) floor(x)
+#endif
+#ifndef MF_CEIL
+#define MF_CEIL(x) ceil(x)
+#endif
+#ifndef MF_TAN
+#define MF_TAN(x) tan(x)
+#endif
+#ifndef MF_ATAN
+#define MF_ATAN(x) atan(x)
+#endif
+#ifndef MF_ASIN
+#define MF_ASIN(x) asin(x)
+#endif
+#define MF_EPS 2.220446049250313e-16
+#define MF_BIG 1e300
+#define MF_TINY 1e-300
+#else
+typedef float mf_real;
+#define MF_R(x) (x##f)
+#ifndef MF_SQRT
+#define MF_SQRT(x) sqrtf(x)
+#endif
+#ifndef MF_EXP
+#define MF_EXP(x) expf(x)
+#endif
+#ifndef MF_EXPM1
+#define MF_EXPM1(x) expm1f(x)
+#endif
+#ifndef MF_LOG
+#define MF_LOG(x) logf(x)
+#endif
+#ifndef MF_LOG1P
+#define MF_LOG1P(x) log1pf(x)
+#endif
+#ifndef MF_POW
+#define MF_POW(x, y) powf(x, y)
+#endif
+#ifndef MF_SIN
+#define MF_SIN(x) sinf(x)
+#endif
+#ifndef MF_COS
+#define MF_COS(x) cosf(x)
+#endif
+#ifndef MF_ACOS
+#define MF_ACOS(x) acosf(x)
+#endif
+#ifndef MF_ATAN2
+#define MF_ATAN2(y, x) atan2f(y, x)
+#endif
+#ifndef MF_ERF
+#define MF_ERF(x) erff(x)
+#endif
+#ifndef MF_ERFC
+#define MF_ERFC(x) erfcf(x)
+#endif
+#ifndef MF_LGAMMA
+#define MF_LGAMMA(x) lgammaf(x)
+#endif
+#ifndef MF_FABS
+#define MF_FABS(x) fabsf(x)
+#endif
+#ifndef MF_FLOOR
+#define MF_FLOOR(x) floorf(x)
+#endif
+#ifndef MF_CEIL
+#define MF_CEIL(x) ceilf(x)
+#endif
+#ifndef MF_TAN
+#define MF_TAN(x) tanf(x)
+#endif
+#ifndef MF_ATAN
+#define MF_ATAN(x) atanf(x)
+#endif
+#ifndef MF_ASIN
+#define MF_ASIN(x) asinf(x)
+#endif
+#define MF_EPS 1.1920929e-7f
+#define MF_BIG 1e30f
+#define MF_TINY 1e-37f
+#endif
+
+#define MF_PI MF_R(3.14159265358979323846)
+#define MF_INV_PI MF_R(0.31830988618379067154)
+#define MF_SQRT_PI MF_R(1.77245385090551602730)
+#define MF_ALPHA_MIN MF_R(1e-4)
+#define MF_ALPHA_MAX MF_R(1e4)
+#define MF_STUDENT_T_GAMMA_MIN MF_R(1.55)
+#define MF_STUDENT_T_GAMMA_MAX MF_R(1000.0)
+
+#if defined(__CUDACC__)
+#define MF_HD __host__ __device__
+#else
+#define MF_HD
+#endif
+#ifndef MF_INLINE
+#define MF_INLINE static inline MF_HD
+#endif
+#ifndef MFDEF
+#define MFDEF extern
+#endif
+/* MF_COLD: functions that device code may call but that host includers need
+ * not compile (numerical samplers, tabulated and IBM queries, the generic
+ * dispatch of the rarer kinds). Host builds declare them here and define them
+ * once, in the implementation; nvcc compiles them into every translation unit
+ * as static device functions. */
+#ifndef MF_COLD
+#if defined(__CUDACC__)
+#define MF_COLD static __noinline__ MF_HD
+#else
+#define MF_COLD MFDEF
+#endif
+#endif
+#if !defined(MF_MALLOC)
+#include <stdlib.h>
+#define MF_MALLOC(n) malloc(n)
+#define MF_FREE(p) free(p)
+#endif
+
+/* Module opt-outs (define before including, the same in every file):
+ *   MF_NO_LEADR        LEADR moments and maps (the non-centered Beckmann kind
+ *                      of mf_ndf stays)
+ *   MF_NO_LTC_TABLE    the built-in GGX LTC table and its accessors
+ *   MF_NO_IBM          the Inverse Bin Map
+ *   MF_NO_MICROSURFACE microsurface generation and the gonioreflectometer */
+
+/* Precision-tagged symbols: every non-inline function is emitted as
+ * <name>_f32 (float) or <name>_f64 (MF_USE_DOUBLE), so a program may hold
+ * both precisions (in different translation units), and an implementation
+ * compiled in one precision never satisfies calls made in the other: the
+ * link fails naming mf_..._f32 or mf_..._f64. The list below is generated
+ * from every MFDEF / MF_COLD declaration by tools/amalgamate.sh. */
+#ifdef MF_USE_DOUBLE
+#define MF__SYM(name) name##_f64
+#else
+#define MF__SYM(name) name##_f32
+#endif
+/* @symbols */
+
+/* Result codes of builders. */
+typedef enum mf_result {
+    MF_SUCCESS = 0,
+    MF_ERROR_INVALID_ARGUMENT = -1,
+    MF_ERROR_OUT_OF_MEMORY = -2,
+    MF_ERROR_INVALID_DATA = -3
+} mf_result;
+/* @api */
+/* A short English name of a result code. */
+MFDEF const char *mf_result_string(mf_result r);
+/* @impl */
+MFDEF const char *mf_result_string(mf_result r)
+{
+    switch (r) {
+    case MF_SUCCESS: return "success";
+    case MF_ERROR_INVALID_ARGUMENT: return "invalid argument";
+    case MF_ERROR_OUT_OF_MEMORY: return "out of memory";
+    case MF_ERROR_INVALID_DATA: return "invalid data";
+    default: return "unknown result";
+    }
+}

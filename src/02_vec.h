@@ -1,0 +1,92 @@
+/* @decl */
+typedef struct mf_vec3 { mf_real x, y, z; } mf_vec3;
+typedef struct mf_mat2 { mf_real m00, m01, m10, m11; } mf_mat2; /* row-major */
+/* @api */
+/* ======================================================================== */
+/* == 2. Vectors and frames                                                 */
+/* ======================================================================== */
+
+MF_INLINE mf_vec3 mf_vec3_make(mf_real x, mf_real y, mf_real z)
+{
+    mf_vec3 v;
+    v.x = x; v.y = y; v.z = z;
+    return v;
+}
+MF_INLINE mf_real mf_dot(mf_vec3 a, mf_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+MF_INLINE mf_vec3 mf_add(mf_vec3 a, mf_vec3 b) { return mf_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+MF_INLINE mf_vec3 mf_scale(mf_vec3 a, mf_real s) { return mf_vec3_make(a.x * s, a.y * s, a.z * s); }
+MF_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
+{
+    return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x < lo ? lo : (x > hi ? hi : x); }
+MF_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
+MF_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+
+/* Unit vector along v; the zero vector when v is zero (or not finite). */
+MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)
+{
+    mf_real l2 = mf_dot(v, v);
+    if (!(l2 > MF_R(0.0)) || !(l2 < MF_BIG)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    return mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
+}
+
+/* Mirror reflection of w about the unit normal m: 2 (w.m) m - w. */
+MF_INLINE mf_vec3 mf_reflect(mf_vec3 w, mf_vec3 m)
+{
+    return mf_add(mf_scale(m, MF_R(2.0) * mf_dot(w, m)), mf_scale(w, MF_R(-1.0)));
+}
+
+/* 2x2 matrices, row-major: M = [m00 m01; m10 m11] acts on column vectors. */
+MF_INLINE mf_mat2 mf_mat2_make(mf_real m00, mf_real m01, mf_real m10, mf_real m11)
+{
+    mf_mat2 m;
+    m.m00 = m00; m.m01 = m01; m.m10 = m10; m.m11 = m11;
+    return m;
+}
+MF_INLINE mf_mat2 mf_mat2_mul(mf_mat2 a, mf_mat2 b)
+{
+    return mf_mat2_make(a.m00 * b.m00 + a.m01 * b.m10, a.m00 * b.m01 + a.m01 * b.m11,
+                        a.m10 * b.m00 + a.m11 * b.m10, a.m10 * b.m01 + a.m11 * b.m11);
+}
+MF_INLINE mf_real mf_mat2_det(mf_mat2 a) { return a.m00 * a.m11 - a.m01 * a.m10; }
+MF_INLINE mf_mat2 mf_mat2_transpose(mf_mat2 a) { return mf_mat2_make(a.m00, a.m10, a.m01, a.m11); }
+/* The inverse; the zero matrix when a is singular or not finite. */
+MF_INLINE mf_mat2 mf_mat2_inverse(mf_mat2 a)
+{
+    mf_real det = mf_mat2_det(a), inv;
+    if (!(det != MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return mf_mat2_make(0, 0, 0, 0);
+    inv = MF_R(1.0) / det;
+    return mf_mat2_make(a.m11 * inv, -a.m01 * inv, -a.m10 * inv, a.m00 * inv);
+}
+/* (M v.xy, v.z) and (M^T v.xy, v.z) */
+MF_INLINE mf_vec3 mf_mat2_apply(mf_mat2 a, mf_vec3 v)
+{
+    return mf_vec3_make(a.m00 * v.x + a.m01 * v.y, a.m10 * v.x + a.m11 * v.y, v.z);
+}
+MF_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
+{
+    return mf_vec3_make(a.m00 * v.x + a.m10 * v.y, a.m01 * v.x + a.m11 * v.y, v.z);
+}
+
+/* A direction with density max(0, w.z) / pi (cosine-weighted hemisphere,
+ * Malley's method) from u1, u2 in [0, 1]. */
+MF_INLINE mf_vec3 mf__sample_cosine(mf_real u1, mf_real u2)
+{
+    mf_real r, phi;
+    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    r = MF_SQRT(u1);
+    phi = MF_R(2.0) * MF_PI * u2;
+    return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));
+}
+
+/* Tangent frame (t, b) around a unit normal n, branchless and singularity-free
+ * (Duff et al. 2017, "Building an Orthonormal Basis, Revisited"). */
+MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
+{
+    mf_real s = n.z >= MF_R(0.0) ? MF_R(1.0) : MF_R(-1.0);
+    mf_real a = MF_R(-1.0) / (s + n.z);
+    mf_real c = n.x * n.y * a;
+    *t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
+    *b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
+}

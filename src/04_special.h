@@ -1,0 +1,179 @@
+/* @api */
+/* ======================================================================== */
+/* == 4. Special functions                                                  */
+/* ======================================================================== */
+/* Small, self-contained pieces the distributions need: the inverse error
+ * function, the regularized incomplete beta function, and the functions
+ * x / expm1(x) and log1p(x) / x, which keep the GTR formulas finite at their
+ * removable singularities (gamma = 1, alpha = 1). */
+
+/* x / (e^x - 1), 1 at x = 0. */
+MF_INLINE mf_real mf__x_over_expm1(mf_real x)
+{
+    if (MF_FABS(x) < MF_R(1e-4)) return MF_R(1.0) - MF_R(0.5) * x;
+    return x / MF_EXPM1(x);
+}
+/* log(1 + x) / x, 1 at x = 0. */
+MF_INLINE mf_real mf__log1p_over_x(mf_real x)
+{
+    if (MF_FABS(x) < MF_R(1e-4)) return MF_R(1.0) - MF_R(0.5) * x;
+    return MF_LOG1P(x) / x;
+}
+
+/* Inverse of erf on (-1, 1): Giles' single-precision approximation (2010),
+ * polished by Newton steps on erf/erfc. Finite for every input (clamped). */
+MF_INLINE mf_real mf_erfinv(mf_real y)
+{
+    mf_real w, p, x;
+    int i;
+    y = mf_clamp(y, MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS);
+    w = -MF_LOG((MF_R(1.0) - y) * (MF_R(1.0) + y));
+    if (w < MF_R(5.0)) {
+        w = w - MF_R(2.5);
+        p = MF_R(2.81022636e-08);
+        p = MF_R(3.43273939e-07) + p * w;
+        p = MF_R(-3.5233877e-06) + p * w;
+        p = MF_R(-4.39150654e-06) + p * w;
+        p = MF_R(0.00021858087) + p * w;
+        p = MF_R(-0.00125372503) + p * w;
+        p = MF_R(-0.00417768164) + p * w;
+        p = MF_R(0.246640727) + p * w;
+        p = MF_R(1.50140941) + p * w;
+    } else {
+        w = MF_SQRT(w) - MF_R(3.0);
+        p = MF_R(-0.000200214257);
+        p = MF_R(0.000100950558) + p * w;
+        p = MF_R(0.00134934322) + p * w;
+        p = MF_R(-0.00367342844) + p * w;
+        p = MF_R(0.00573950773) + p * w;
+        p = MF_R(-0.0076224613) + p * w;
+        p = MF_R(0.00943887047) + p * w;
+        p = MF_R(1.00167406) + p * w;
+        p = MF_R(2.83297682) + p * w;
+    }
+    x = p * y;
+#ifdef MF_USE_DOUBLE
+    for (i = 0; i < 2; ++i) { /* Newton on the tail-accurate side */
+        mf_real r = x >= 0.0 ? (1.0 - y) - MF_ERFC(x) : MF_ERFC(-x) - (1.0 + y); /* erf(x) - y */
+        x -= r / (2.0 / MF_SQRT_PI * MF_EXP(-x * x));
+    }
+#else
+    (void)i;
+#endif
+    return x;
+}
+
+/* Regularized incomplete beta I_x(a, b) by Lentz's continued fraction
+ * (converges fast for x < (a+1)/(a+b+2); the symmetry I_x(a,b) = 1 - I_{1-x}(b,a)
+ * covers the rest). lbeta = log B(a, b), precomputed by the caller. */
+MF_INLINE mf_real mf__betacf(mf_real a, mf_real b, mf_real x)
+{
+    const mf_real tiny = MF_R(1e-30);
+    mf_real c = MF_R(1.0), d = MF_R(1.0) - (a + b) * x / (a + MF_R(1.0)), h;
+    int m;
+    if (MF_FABS(d) < tiny) d = tiny;
+    d = MF_R(1.0) / d;
+    h = d;
+    for (m = 1; m <= 300; ++m) {
+        mf_real fm = (mf_real)m, m2 = MF_R(2.0) * fm, aa, del;
+        aa = fm * (b - fm) * x / ((a + m2 - MF_R(1.0)) * (a + m2));
+        d = MF_R(1.0) + aa * d; if (MF_FABS(d) < tiny) d = tiny;
+        c = MF_R(1.0) + aa / c; if (MF_FABS(c) < tiny) c = tiny;
+        d = MF_R(1.0) / d; h *= d * c;
+        aa = -(a + fm) * (a + b + fm) * x / ((a + m2) * (a + m2 + MF_R(1.0)));
+        d = MF_R(1.0) + aa * d; if (MF_FABS(d) < tiny) d = tiny;
+        c = MF_R(1.0) + aa / c; if (MF_FABS(c) < tiny) c = tiny;
+        d = MF_R(1.0) / d; del = d * c; h *= del;
+        if (MF_FABS(del - MF_R(1.0)) < MF_R(4.0) * MF_EPS) break;
+    }
+    return h;
+}
+MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
+{
+    mf_real front;
+    if (!(x > MF_R(0.0))) return MF_R(0.0);
+    if (!(x < MF_R(1.0))) return MF_R(1.0);
+    front = MF_EXP(a * MF_LOG(x) + b * MF_LOG1P(-x) - lbeta);
+    if (x < (a + MF_R(1.0)) / (a + b + MF_R(2.0))) return front * mf__betacf(a, b, x) / a;
+    return MF_R(1.0) - front * mf__betacf(b, a, MF_R(1.0) - x) / b;
+}
+/* @cold */
+/* One step of safeguarded Newton for an increasing f on the bracket [lo, hi]:
+ * shrinks the bracket with the sign of f, takes the Newton step, falls back to
+ * bisection when the step leaves the bracket. Returns 1 when converged. */
+MF_INLINE int mf__newton_step(mf_real *x, mf_real f, mf_real df, mf_real *lo, mf_real *hi, mf_real tol)
+{
+    mf_real step, nx;
+    if (f > MF_R(0.0)) *hi = *x; else *lo = *x;
+    if (df > MF_R(0.0)) {
+        step = f / df;
+        nx = *x - step;
+        if (MF_FABS(step) <= tol) { *x = mf_clamp(nx, *lo, *hi); return 1; }
+        if (nx > *lo && nx < *hi) { *x = nx; return 0; }
+    }
+    nx = MF_R(0.5) * (*lo + *hi);
+    if (!(nx > *lo && nx < *hi)) return 1;   /* bracket exhausted */
+    *x = nx;
+    return 0;
+}
+
+/* Sample phi in (-pi, pi] with density proportional to max(0, c + cos(phi)). */
+MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
+{
+    mf_real phi0, total, lo, hi, phi, sgn = MF_R(1.0);
+    int i;
+    if (u < MF_R(0.5)) { u = MF_R(1.0) - MF_R(2.0) * u; sgn = MF_R(-1.0); }
+    else u = MF_R(2.0) * u - MF_R(1.0);
+    /* |phi| has CDF (c phi + sin phi) / (c phi0 + sin phi0) on [0, phi0] */
+    phi0 = c >= MF_R(1.0) ? MF_PI : MF_ACOS(mf_max(-c, MF_R(-1.0)));
+    total = c * phi0 + MF_SIN(phi0);
+    if (c > MF_R(1e6)) return sgn * u * MF_PI;   /* uniform */
+    lo = MF_R(0.0); hi = phi0; phi = u * phi0;
+    for (i = 0; i < 60; ++i)
+        if (mf__newton_step(&phi, c * phi + MF_SIN(phi) - u * total, c + MF_COS(phi), &lo, &hi, MF_R(4.0) * MF_EPS))
+            break;
+    return sgn * phi;
+}
+
+/* 8-point Gauss-Legendre rule: nodes xi on [-1, 1], weights normalized to sum 1. */
+#define MF__GL_N 8
+MF_INLINE mf_real mf__gl_xi(int i)
+{
+    const mf_real x[MF__GL_N] = {
+        MF_R(-0.96028985649753623), MF_R(-0.79666647741362674), MF_R(-0.52553240991632899),
+        MF_R(-0.18343464249564980), MF_R(0.18343464249564980), MF_R(0.52553240991632899),
+        MF_R(0.79666647741362674), MF_R(0.96028985649753623) };
+    return x[i];
+}
+MF_INLINE mf_real mf__gl_w(int i)
+{
+    const mf_real w[MF__GL_N] = {
+        MF_R(0.050614268145188130), MF_R(0.11119051722668724), MF_R(0.15685332293894364),
+        MF_R(0.18134189168918100), MF_R(0.18134189168918100), MF_R(0.15685332293894364),
+        MF_R(0.11119051722668724), MF_R(0.050614268145188130) };
+    return w[i];
+}
+
+/* 4-point Gauss-Legendre rule on [-1, 1], weights normalized to sum 1. */
+MF_INLINE mf_real mf__gl4_xi(int i)
+{
+    const mf_real x[4] = { MF_R(-0.86113631159405258), MF_R(-0.33998104358485626), MF_R(0.33998104358485626),
+                           MF_R(0.86113631159405258) };
+    return x[i];
+}
+MF_INLINE mf_real mf__gl4_w(int i)
+{
+    const mf_real w[4] = { MF_R(0.17392742256872693), MF_R(0.32607257743127307), MF_R(0.32607257743127307),
+                           MF_R(0.17392742256872693) };
+    return w[i];
+}
+
+/* Legendre polynomials P_0..P_(MF__GL_N) at x. */
+MF_INLINE void mf__legendre(mf_real x, mf_real *p)
+{
+    int n;
+    p[0] = MF_R(1.0);
+    p[1] = x;
+    for (n = 1; n < MF__GL_N; ++n)
+        p[n + 1] = ((mf_real)(2 * n + 1) * x * p[n] - (mf_real)n * p[n - 1]) / (mf_real)(n + 1);
+}

@@ -1,0 +1,69 @@
+/* ======================================================================== */
+/* == 6. Distribution kinds: GGX                                            */
+/* ======================================================================== */
+/* Anisotropic GGX (Trowbridge-Reitz): D = 1 / (pi ax ay cos^4 (1 + tan^2/alpha_phi^2)^2)
+ * (thesis Eq. C.3, corrected; Heitz 2014 Eq. 85); Lambda (thesis C.4); NDF
+ * sampling by inverting the slope CDF (Walter et al. 2007); visible normals by
+ * spherical caps (Dupuy & Benyoub 2023). Every function is inline: GGX is the
+ * hot path of most renderers. */
+/* @decl */
+typedef struct mf_ndf_ggx { char none; } mf_ndf_ggx;   /* no parameters beyond mf_ndf.ax, ay */
+/* @api */
+/* Anisotropic GGX (Trowbridge-Reitz). */
+MF_INLINE mf_ndf mf_ggx(mf_real alpha_x, mf_real alpha_y)
+{
+    return mf__ndf_init(MF_NDF_GGX, alpha_x, alpha_y);
+}
+
+MF_INLINE mf_real mf_ggx_D(mf_real ax, mf_real ay, mf_vec3 wm)
+{
+    mf_real t;
+    if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
+    t = wm.z * wm.z + mf__q(ax, ay, wm);          /* cos^2 (1 + tan^2/alpha^2), no cos^4 underflow */
+    return MF_R(1.0) / (MF_PI * ax * ay * t * t);
+}
+
+MF_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
+{
+    mf_real a2t2 = mf__a2t2(ax, ay, w);
+    return a2t2 / (MF_R(2.0) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + a2t2)));
+}
+
+/* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3), before the
+ * final normalization; w need not be unit. (0,0,1) for degenerate input. */
+MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 v, h;
+    mf_real phi, z, s, l2;
+    v = mf_vec3_make(ax * w.x, ay * w.y, w.z);
+    l2 = mf_dot(v, v);
+    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
+    phi = MF_R(2.0) * MF_PI * u1;
+    z = (MF_R(1.0) - u2) * (MF_R(1.0) + v.z) - v.z;          /* cap of the visible hemisphere */
+    s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
+    h = mf_vec3_make(s * MF_COS(phi) + v.x, s * MF_SIN(phi) + v.y, z + v.z);
+    h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
+    if (!(mf_dot(h, h) > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    return h;
+}
+MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 h;
+    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    h = mf__ggx_vndf_unnormalized(ax, ay, w, u1, u2);
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+}
+
+/* The kind's entries of the generic dispatch (05_ndf.h). */
+MF_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
+MF_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
+MF_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
+    return mf__wm_from_slope_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+}
+MF_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+}

@@ -1,0 +1,44 @@
+/* @api */
+/* ======================================================================== */
+/* == 8. Sampling                                                           */
+/* ======================================================================== */
+/* mf_sample_D draws wm with density D(wm) wm.z (Walter et al. 2007): the
+ * radius of the slope from the inverse CDF, the azimuth uniform, stretched by
+ * (ax, ay). mf_sample_visible draws wm with density mf_D_visible(w, wm):
+ *   GGX       spherical caps (Dupuy & Benyoub 2023): sample the visible
+ *             hemisphere of the stretched configuration as a spherical cap.
+ *   Beckmann  slope-space inversion (Heitz & d'Eon 2014, Jakob 2014): the
+ *             slope along the view from its CDF (safeguarded Newton on erf),
+ *             the other slope from erfinv. The CDF is scaled by tan(theta), so
+ *             normal incidence (cot = infinity) and tiny alpha are exact.
+ *   GTR, Student-t  exact numerical inversion (see mf__iso_sample_visible):
+ *             64 evaluations (32 in float builds) of the inverse NDF CDF per
+ *             sample, no rejection, deterministic; about 50-100x the cost of
+ *             GGX (see make bench). */
+
+/* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
+ * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
+MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    mf_vec3 m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
+              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
+    if (!d->transformed) return m;
+    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+}
+
+/* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
+ * inline, the other kinds out of line. Transformed kinds: the base's visible
+ * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). */
+MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 m;
+    if (!d->transformed) {
+        if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+        return mf__ndf_sample_visible(d, w, u1, u2);
+    }
+    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    w = mf_mat2_apply(d->Minv, w);   /* the samplers normalize their view themselves */
+    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2);
+    else m = mf__ndf_sample_visible(d, w, u1, u2);
+    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+}

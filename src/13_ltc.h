@@ -1,0 +1,601 @@
+/* @api */
+/* ======================================================================== */
+/* == 11. Linearly Transformed Cosines                                      */
+/* ======================================================================== */
+/* Heitz, Dupuy, Hill, Neubelt 2016; Tao et al. 2021 Eq. 1: a clamped cosine
+ * D_o(w) = max(0, w.z)/pi transformed by a 3x3 matrix M,
+ *   D(w) = D_o(M^-1 w / |M^-1 w|) |det M^-1| / |M^-1 w|^3,
+ * integrates to 1 over the sphere, and its integral over a polygon is the
+ * cosine form factor of the polygon transformed by M^-1 (Heitz 2017), clipped
+ * exactly at the horizon. Polygons are given by their vertices relative to the
+ * shading point (any length); the front face is the one whose vertices run
+ * counterclockwise seen from the shading point. The fitter, the tables and the
+ * built-in GGX table are non-inline (section 14, MICROFACET_IMPLEMENTATION). */
+
+typedef struct mf_ltc {
+    mf_real M[9];       /* row-major */
+    mf_real Minv[9];
+    mf_real det_inv;    /* |det M^-1| */
+} mf_ltc;
+
+MF_INLINE mf_vec3 mf__mat3_apply(const mf_real *a, mf_vec3 v)
+{
+    return mf_vec3_make(a[0] * v.x + a[1] * v.y + a[2] * v.z, a[3] * v.x + a[4] * v.y + a[5] * v.z,
+                        a[6] * v.x + a[7] * v.y + a[8] * v.z);
+}
+
+/* Inverse of a row-major 3x3 matrix; returns its determinant (0: singular). */
+MF_INLINE mf_real mf__mat3_inverse(const mf_real *a, mf_real *inv)
+{
+    mf_real c0 = a[4] * a[8] - a[5] * a[7], c1 = a[5] * a[6] - a[3] * a[8], c2 = a[3] * a[7] - a[4] * a[6];
+    mf_real det = a[0] * c0 + a[1] * c1 + a[2] * c2, r;
+    if (!(det != MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return MF_R(0.0);
+    r = MF_R(1.0) / det;
+    inv[0] = c0 * r; inv[1] = (a[2] * a[7] - a[1] * a[8]) * r; inv[2] = (a[1] * a[5] - a[2] * a[4]) * r;
+    inv[3] = c1 * r; inv[4] = (a[0] * a[8] - a[2] * a[6]) * r; inv[5] = (a[2] * a[3] - a[0] * a[5]) * r;
+    inv[6] = c2 * r; inv[7] = (a[1] * a[6] - a[0] * a[7]) * r; inv[8] = (a[0] * a[4] - a[1] * a[3]) * r;
+    return det;
+}
+
+/* The LTC of the row-major matrix m[9]. A singular or non-finite M gives the
+ * clamped cosine itself (M = I). */
+MF_INLINE mf_ltc mf_ltc_from_matrix9(const mf_real m[9])
+{
+    mf_ltc l;
+    mf_real det;
+    int i;
+    for (i = 0; i < 9; ++i) l.M[i] = m[i];
+    det = mf__mat3_inverse(l.M, l.Minv);
+    if (!(MF_FABS(det) > MF_R(1e-20))) {
+        for (i = 0; i < 9; ++i) l.M[i] = l.Minv[i] = (i % 4 == 0) ? MF_R(1.0) : MF_R(0.0);
+        det = MF_R(1.0);
+    }
+    l.det_inv = MF_R(1.0) / MF_FABS(det);
+    return l;
+}
+
+/* The same from M[row][col] (the API form; in C, passing a non-const array
+ * to a const 2D-array parameter draws a -Wpedantic warning before C23:
+ * mf_ltc_from_matrix9 avoids it). */
+MF_INLINE mf_ltc mf_ltc_from_matrix(const mf_real M[3][3])
+{
+    mf_real m[9];
+    int i;
+    for (i = 0; i < 9; ++i) m[i] = M[i / 3][i % 3];
+    return mf_ltc_from_matrix9(m);
+}
+
+/* The LTC of the usual 4/5-coefficient tables, which store the inverse
+ * M^-1 = [a 0 b; 0 c 0; d 0 e] (e = 1 in 4-coefficient tables). */
+MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d, mf_real e)
+{
+    mf_real inv[3][3], m[9], det;
+    mf_ltc l;
+    int i;
+    inv[0][0] = a; inv[0][1] = 0; inv[0][2] = b;
+    inv[1][0] = 0; inv[1][1] = c; inv[1][2] = 0;
+    inv[2][0] = d; inv[2][1] = 0; inv[2][2] = e;
+    for (i = 0; i < 9; ++i) m[i] = inv[i / 3][i % 3];
+    det = mf__mat3_inverse(m, l.M);
+    if (!(MF_FABS(det) > MF_R(1e-20))) {
+        const mf_real I[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        return mf_ltc_from_matrix9(I);
+    }
+    for (i = 0; i < 9; ++i) l.Minv[i] = m[i];
+    l.det_inv = MF_FABS(det);
+    return l;
+}
+
+/* D(w), per steradian: |det M^-1| (M^-1 w).z / (pi |M^-1 w|^4) where positive. */
+MF_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
+{
+    mf_vec3 v = mf__mat3_apply(l->Minv, w);
+    mf_real l2 = mf_dot(v, v);
+    if (!(v.z > MF_R(0.0)) || !(l2 > MF_R(0.0))) return MF_R(0.0);
+    return l->det_inv * v.z / (MF_PI * l2 * l2);
+}
+
+/* A direction with density mf_ltc_eval: a cosine-distributed direction moved by M. */
+MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
+{
+    return mf_normalize(mf__mat3_apply(l->M, mf__sample_cosine(u1, u2)));
+}
+
+/* Integral of the cosine lobe's vector irradiance over the great arc from a to
+ * b (unit vectors): (theta / sin theta) (a x b), theta = atan2(|a x b|, a.b),
+ * accurate for tiny and for nearly antipodal arcs (no acos, no 1 - x^2). */
+MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+{
+    mf_vec3 c = mf_cross(a, b);
+    mf_real s = MF_SQRT(mf_dot(c, c)), d = mf_dot(a, b);
+    if (!(s > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    return mf_scale(c, MF_ATAN2(s, d) / s);
+}
+
+/* Signed cosine form factor (z component of the vector form factor, over
+ * 2 pi) of the polygon p[0..n-1] transformed by A (NULL: identity), clipped
+ * to z >= 0 on the fly: every edge is cut where it crosses the horizon and the
+ * exit and entry points are joined along the horizon, so no vertex buffer is
+ * needed and any n works. */
+MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
+{
+    int i, s = -1;
+    mf_real sum = MF_R(0.0);
+    mf_vec3 exit_pt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), a, b;
+    if (!p || n < 3) return MF_R(0.0);
+    for (i = 0; i < n; ++i) {
+        a = A ? mf__mat3_apply(A, p[i]) : p[i];
+        if (a.z > MF_R(0.0)) { s = i; break; }
+    }
+    if (s < 0) return MF_R(0.0);   /* entirely below the horizon */
+    a = A ? mf__mat3_apply(A, p[s]) : p[s];
+    for (i = 1; i <= n; ++i) {
+        int above_a = a.z > MF_R(0.0), above_b;
+        b = A ? mf__mat3_apply(A, p[(s + i) % n]) : p[(s + i) % n];
+        above_b = b.z > MF_R(0.0);
+        if (above_a && above_b) {
+            sum += mf__edge_vector(mf_normalize(a), mf_normalize(b)).z;
+        } else if (above_a || above_b) {
+            mf_real t = a.z / (a.z - b.z);
+            mf_vec3 x = mf_add(a, mf_scale(mf_add(b, mf_scale(a, MF_R(-1.0))), t));
+            x.z = MF_R(0.0);
+            x = mf_normalize(x);
+            if (above_a) {
+                sum += mf__edge_vector(mf_normalize(a), x).z;
+                exit_pt = x;
+            } else {
+                sum += mf__edge_vector(exit_pt, x).z;     /* along the horizon */
+                sum += mf__edge_vector(x, mf_normalize(b)).z;
+            }
+        }
+        a = b;
+    }
+    return sum * MF_R(0.15915494309189533577);   /* 1 / (2 pi) */
+}
+
+MF_INLINE mf_real mf__sided(mf_real ff, int two_sided)
+{
+    /* counterclockwise seen from the shading point is the front */
+    ff = -ff;
+    if (two_sided) return MF_FABS(ff);
+    return mf_max(ff, MF_R(0.0));
+}
+
+/* Integral of D over the spherical polygon seen through verts[0..n-1]
+ * (positions relative to the shading point, any length, n >= 3), clipped at
+ * the horizon; two_sided counts both faces of the polygon. */
+MF_INLINE mf_real mf_ltc_integrate(const mf_ltc *l, const mf_vec3 *verts, int n, int two_sided)
+{
+    return mf__sided(mf__polygon_form_factor(l->Minv, verts, n), two_sided);
+}
+
+/* Cosine form factor of a polygon: integral over it of max(0, w.z)/pi,
+ * clipped at the horizon (the irradiance of a unit-radiance light, / pi). */
+MF_INLINE mf_real mf_polygon_irradiance(const mf_vec3 *verts, int n, int two_sided)
+{
+    return mf__sided(mf__polygon_form_factor((const mf_real *)0, verts, n), two_sided);
+}
+
+/* Vector form factor F of a polygon (not clipped; Heitz 2017): F.z is its
+ * unclipped cosine form factor, |F| and F / |F| feed mf_sphere_form_factor. */
+MF_INLINE mf_vec3 mf_polygon_vector_form_factor(const mf_vec3 *verts, int n)
+{
+    mf_vec3 f = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    int i;
+    if (!verts || n < 3) return f;
+    for (i = 0; i < n; ++i) f = mf_add(f, mf__edge_vector(mf_normalize(verts[i]), mf_normalize(verts[(i + 1) % n])));
+    return mf_scale(f, MF_R(-0.15915494309189533577));
+}
+
+/* Cosine form factor of a uniform sphere light of angular radius sigma whose
+ * center lies at angle omega from the normal, clipped at the horizon
+ * (Snyder 1996), from F = its vector form factor: |F| = sin^2 sigma,
+ * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
+ * disk, it is the sphere approximation of their horizon-clipped form factor
+ * (Hill & Heitz 2016). */
+MF_INLINE mf_real mf_sphere_form_factor(mf_vec3 F)
+{
+    mf_real len = MF_SQRT(mf_dot(F, F)), s2, co, so, x, y, z;
+    if (!(len > MF_R(0.0))) return MF_R(0.0);
+    s2 = mf_min(len, MF_R(1.0));                 /* sin^2 sigma */
+    co = mf_clamp(F.z / len, MF_R(-1.0), MF_R(1.0));
+    so = MF_SQRT(MF_R(1.0) - co * co);
+    x = MF_SQRT(mf_max(MF_R(1.0) / s2 - MF_R(1.0), MF_R(0.0)));  /* cot sigma */
+    if (co >= MF_SQRT(s2)) return co * s2;      /* omega <= pi/2 - sigma: fully above */
+    if (co <= -MF_SQRT(s2)) return MF_R(0.0);    /* omega >= pi/2 + sigma: fully below */
+    y = so > MF_R(0.0) ? -x * co / so : MF_R(0.0);
+    y = mf_clamp(y, MF_R(-1.0), MF_R(1.0));
+    z = so * MF_SQRT(MF_R(1.0) - y * y);
+    return mf_max(((co * MF_ACOS(y) - x * z) * s2 + MF_ATAN2(z, x)) * MF_INV_PI, MF_R(0.0));
+}
+
+/* Multi-scale roughness (Tao et al. 2021). The meso-scale normals of a
+ * footprint, summarized by the length of their mean (an unnormalized mip-mapped
+ * normal), are an LTC with M = diag(a, a, 1), i.e. a GGX lobe of roughness a;
+ * Eq. 5 fits a from the mean length (result clamped to [0, 1]; a mean length
+ * below about 0.65 gives 1). */
+MF_INLINE mf_real mf_ltc_meso_alpha(mf_real mean_normal_length)
+{
+    mf_real b = mf_clamp(mean_normal_length, MF_R(0.0), MF_R(1.0)), b2 = b * b, b3 = b2 * b, b4 = b2 * b2;
+    mf_real num = MF_R(1.629) * b4 + MF_R(17.05) * b3 - MF_R(18.96) * b2 - MF_R(23.37) * b + MF_R(23.65);
+    mf_real den = b3 - MF_R(28.07) * b2 + MF_R(31.1) * b - MF_R(3.545);
+    if (!(den > MF_R(0.0))) return MF_R(1.0);
+    return mf_clamp(num / den, MF_R(0.0), MF_R(1.0));
+}
+
+/* Roughness of the convolution of micro- and meso-scale lobes (Tao Eq. 7),
+ * clamped to [0, 1]. */
+MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
+{
+    mf_real a = mf_clamp(alpha_micro, MF_R(0.0), MF_R(1.0)), m = mf_clamp(alpha_meso, MF_R(0.0), MF_R(1.0));
+    return mf_clamp(MF_R(0.07) * a * a + MF_R(0.94) * a + m - MF_R(0.83) * a * m, MF_R(0.0), MF_R(1.0));
+}
+
+/* ---- LTC fitting and tables (Heitz et al. 2016, Sec. 4; Hill & Heitz 2016) ----
+ * mf_ltc_fit fits, for one view direction wo = (sin t, 0, cos t), the LTC that
+ * best matches the normalized lobe f(wo, wi) wi.z / albedo: M = B L with B the
+ * frame whose z is the lobe's average direction and L = [m11 0 m13; 0 m22 0;
+ * 0 0 1], found by Nelder-Mead on the cubed error estimated with multiple
+ * importance sampling from the LTC and the BRDF (32 x 32 stratified samples
+ * each, deterministic; the albedo from 256 x 256). The BRDF is either the specular microfacet BRDF of d
+ * (brdf = NULL) or a callback returning f(wo, wi) wi.z (d = NULL; its side of
+ * the estimate samples the cosine). Also returned: the albedo, integral of
+ * f cos, and the Fresnel term, integral of f cos (1 - wo.h)^5, so that with
+ * Schlick's F the lobe integrates to f0 albedo + (1 - f0) fresnel... written
+ * out: (albedo - fresnel) f0 + fresnel. */
+typedef mf_real (*mf_brdf_cos_fn)(mf_vec3 wo, mf_vec3 wi, void *ctx);
+typedef struct mf_ltc_fit_result {
+    mf_ltc ltc;          /* the fitted distribution */
+    mf_real inv[4];      /* M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1] (normalized, table form) */
+    mf_real albedo;      /* integral of f cos */
+    mf_real fresnel;     /* integral of f cos (1 - wo.h)^5 */
+    mf_real error;       /* the fitted L3 error estimate */
+    mf_real params[3];   /* m11, m22, m13: pass as guess to the next fit */
+} mf_ltc_fit_result;
+MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_real cos_theta_o,
+                           const mf_real *guess, mf_ltc_fit_result *out);
+
+/* A table of fits over view angle and roughness for a distribution family:
+ * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
+ * n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
+ * sqrt(alpha) (alpha clamped below at MF_LTC_ALPHA_MIN). data holds, per
+ * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel. */
+#define MF_LTC_ALPHA_MIN MF_R(1e-3)
+typedef struct mf_ltc_table { int n_theta, n_alpha; float *data; } mf_ltc_table;
+typedef void (*mf_progress_fn)(int done, int total, void *ctx);
+MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
+                                   mf_progress_fn progress, void *ctx);
+MFDEF void mf_ltc_table_release(mf_ltc_table *t);
+/* Bilinear lookup (of the normalized M^-1 entries, albedo and fresnel). */
+MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
+                                 mf_real *albedo, mf_real *fresnel);
+
+/* Built-in table (tools/ltc_fit.c): the LTC of the GGX BRDF cos for
+ * wo = (sin theta_o, 0, cos theta_o), isotropic alpha in [0, 1] (clamped below
+ * at MF_LTC_ALPHA_MIN), normalized: f cos ~= mf_ltc_ggx_albedo mf_ltc_eval.
+ * mf_ltc_ggx_fresnel is the integral of f cos (1 - wo.h)^5 (Schlick split).
+ * mf_ltc_ggx_table exposes the raw 64 x 64 x 6 floats for GPU textures: rows
+ * sqrt(alpha), columns sqrt(1 - cos theta_o), entries inv0 inv1 inv2 inv3
+ * albedo fresnel with M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1]. Float16
+ * packing: the LTC does not change when M^-1 is scaled, so divide inv0..inv3
+ * and the implicit 1 by the largest of |inv0..inv3| and store those five
+ * values (all in [-1, 1]; mf_ltc_from_inverse takes the fifth as e). Only the
+ * 15 entries with alpha < 0.01 and theta_o > 85 deg need values below float16's
+ * smallest normal (6e-5) for e. Not available in CUDA device code (upload the
+ * table instead). Fitted in 185 s (double, one core). */
+#ifndef MF_NO_LTC_TABLE
+MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha);
+MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);
+MFDEF mf_real mf_ltc_ggx_fresnel(mf_real cos_theta_o, mf_real alpha);
+MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
+#endif
+/* @impl */
+/* ---- LTC fitting ---- */
+
+typedef struct mf__fit_ctx {
+    const mf_ndf *d;
+    mf_brdf_cos_fn brdf;
+    void *ctx;
+    mf_vec3 wo, X, Z;          /* view; frame of the lobe (Y = (0,1,0)) */
+    mf_real albedo;
+    int n;                     /* samples per technique */
+    mf_vec3 *bw;               /* BRDF-side samples: directions, f/albedo, pdf */
+    mf_real *bf, *bp;
+} mf__fit_ctx;
+
+static mf_real mf__fit_f(const mf__fit_ctx *c, mf_vec3 wi)
+{
+    if (c->brdf) return wi.z > MF_R(0.0) ? c->brdf(c->wo, wi, c->ctx) : MF_R(0.0);
+    return mf_brdf(c->d, c->wo, wi) * mf_max(wi.z, MF_R(0.0));
+}
+
+static mf_real mf__fit_pdf(const mf__fit_ctx *c, mf_vec3 wi)
+{
+    if (c->brdf) return mf_max(wi.z, MF_R(0.0)) * MF_INV_PI;
+    return mf_brdf_pdf(c->d, c->wo, wi);
+}
+
+static mf_ltc mf__fit_ltc(const mf__fit_ctx *c, const mf_real *p)
+{
+    /* M = [X Y Z] [m11 0 m13; 0 m22 0; 0 0 1] */
+    mf_real m11 = MF_FABS(p[0]) + MF_R(1e-7), m22 = MF_FABS(p[1]) + MF_R(1e-7), m13 = p[2], m[9];
+    m[0] = c->X.x * m11; m[1] = MF_R(0.0); m[2] = c->X.x * m13 + c->Z.x;
+    m[3] = MF_R(0.0);    m[4] = m22;       m[5] = MF_R(0.0);
+    m[6] = c->X.z * m11; m[7] = MF_R(0.0); m[8] = c->X.z * m13 + c->Z.z;
+    return mf_ltc_from_matrix9(m);
+}
+
+static mf_real mf__fit_error(const mf__fit_ctx *c, const mf_real *p)
+{
+    mf_ltc l = mf__fit_ltc(c, p);
+    mf_real err = MF_R(0.0);
+    int i, j, k = 0, n1 = 1;
+    while (n1 * n1 < c->n) ++n1;
+    /* LTC side: stratified samples of the current LTC */
+    for (i = 0; i < n1; ++i)
+        for (j = 0; j < n1; ++j) {
+            mf_vec3 w = mf_ltc_sample(&l, ((mf_real)i + MF_R(0.5)) / (mf_real)n1, ((mf_real)j + MF_R(0.5)) / (mf_real)n1);
+            mf_real dl = mf_ltc_eval(&l, w), f = mf__fit_f(c, w) / c->albedo, pb = mf__fit_pdf(c, w), e = MF_FABS(f - dl);
+            if (dl + pb > MF_R(0.0)) err += e * e * e / (dl + pb);
+            ++k;
+        }
+    /* BRDF side: fixed samples */
+    for (i = 0; i < c->n; ++i) {
+        mf_real dl = mf_ltc_eval(&l, c->bw[i]), e = MF_FABS(c->bf[i] - dl);
+        if (dl + c->bp[i] > MF_R(0.0)) err += e * e * e / (dl + c->bp[i]);
+    }
+    return err / (mf_real)(k + c->n);
+}
+
+/* Nelder-Mead in 3 dimensions (standard coefficients). */
+static mf_real mf__nelder_mead(const mf__fit_ctx *c, mf_real *x, mf_real step, int max_iter)
+{
+    mf_real s[4][3], f[4], xr[3], xe[3], xc[3], cen[3];
+    int i, j, it;
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 3; ++j) s[i][j] = x[j];
+        if (i > 0) s[i][i - 1] += step * (MF_FABS(x[i - 1]) > MF_R(0.1) ? MF_FABS(x[i - 1]) : MF_R(0.1));
+        f[i] = mf__fit_error(c, s[i]);
+    }
+    for (it = 0; it < max_iter; ++it) {
+        int lo = 0, hi = 0, nh = 0;
+        mf_real fr;
+        for (i = 1; i < 4; ++i) { if (f[i] < f[lo]) lo = i; if (f[i] > f[hi]) hi = i; }
+        nh = lo;
+        for (i = 0; i < 4; ++i) if (i != hi && f[i] > f[nh]) nh = i;
+        /* converged: relative spread 1e-7 (double) or 1.2e-5 (float) */
+        if (MF_FABS(f[hi] - f[lo]) <= mf_max(MF_R(1e-7), MF_R(100.0) * MF_EPS) * (MF_FABS(f[lo]) + MF_R(1e-12))) break;
+        for (j = 0; j < 3; ++j) {
+            cen[j] = MF_R(0.0);
+            for (i = 0; i < 4; ++i) if (i != hi) cen[j] += s[i][j] / MF_R(3.0);
+            xr[j] = cen[j] + (cen[j] - s[hi][j]);
+        }
+        fr = mf__fit_error(c, xr);
+        if (fr < f[lo]) {
+            mf_real fe;
+            for (j = 0; j < 3; ++j) xe[j] = cen[j] + MF_R(2.0) * (xr[j] - cen[j]);
+            fe = mf__fit_error(c, xe);
+            if (fe < fr) { for (j = 0; j < 3; ++j) s[hi][j] = xe[j]; f[hi] = fe; }
+            else { for (j = 0; j < 3; ++j) s[hi][j] = xr[j]; f[hi] = fr; }
+        } else if (fr < f[nh]) {
+            for (j = 0; j < 3; ++j) s[hi][j] = xr[j];
+            f[hi] = fr;
+        } else {
+            mf_real fc;
+            for (j = 0; j < 3; ++j) xc[j] = cen[j] + MF_R(0.5) * (s[hi][j] - cen[j]);
+            fc = mf__fit_error(c, xc);
+            if (fc < f[hi]) { for (j = 0; j < 3; ++j) s[hi][j] = xc[j]; f[hi] = fc; }
+            else {
+                for (i = 0; i < 4; ++i) if (i != lo) {
+                    for (j = 0; j < 3; ++j) s[i][j] = s[lo][j] + MF_R(0.5) * (s[i][j] - s[lo][j]);
+                    f[i] = mf__fit_error(c, s[i]);
+                }
+            }
+        }
+    }
+    {
+        int lo = 0;
+        for (i = 1; i < 4; ++i) if (f[i] < f[lo]) lo = i;
+        for (j = 0; j < 3; ++j) x[j] = s[lo][j];
+        return f[lo];
+    }
+}
+
+MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_real cos_theta_o,
+                           const mf_real *guess, mf_ltc_fit_result *out)
+{
+    mf__fit_ctx c;
+    mf_real ct, st, sum = MF_R(0.0), fres = MF_R(0.0), p[3];
+    mf_vec3 avg = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    int i, j, n1 = 32, k;
+    if (!out || (!d && !brdf) || !(cos_theta_o > MF_R(0.0)) || !(cos_theta_o <= MF_R(1.0)))
+        return MF_ERROR_INVALID_ARGUMENT;
+    ct = cos_theta_o; st = MF_SQRT(mf_max(MF_R(1.0) - ct * ct, MF_R(0.0)));
+    c.d = d; c.brdf = brdf; c.ctx = ctx; c.wo = mf_vec3_make(st, MF_R(0.0), ct);
+    c.n = n1 * n1;
+    c.bw = (mf_vec3 *)MF_MALLOC(sizeof(mf_vec3) * (size_t)c.n);
+    c.bf = (mf_real *)MF_MALLOC(sizeof(mf_real) * (size_t)c.n);
+    c.bp = (mf_real *)MF_MALLOC(sizeof(mf_real) * (size_t)c.n);
+    if (!c.bw || !c.bf || !c.bp) { MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp); return MF_ERROR_OUT_OF_MEMORY; }
+    /* Albedo, Fresnel term and average direction by importance sampling (the
+     * BRDF's own sampler, or the cosine) on a 256 x 256 grid, fine enough for
+     * the heavy GGX tail (1% of the lobe beyond 45 degrees at alpha 0.1) that a
+     * 32 x 32 midpoint grid misses; the error estimate uses every 8th point. */
+    for (i = 0, k = 0; i < 8 * n1; ++i)
+        for (j = 0; j < 8 * n1; ++j) {
+            mf_real u1 = ((mf_real)i + MF_R(0.5)) / (mf_real)(8 * n1), u2 = ((mf_real)j + MF_R(0.5)) / (mf_real)(8 * n1), f, pdf, w;
+            mf_vec3 wi, h;
+            wi = brdf ? mf__sample_cosine(u1, u2) : mf_brdf_sample(d, c.wo, u1, u2);
+            f = mf__fit_f(&c, wi);
+            pdf = mf__fit_pdf(&c, wi);
+            w = pdf > MF_R(0.0) ? f / pdf : MF_R(0.0);
+            if (i % 8 == 4 && j % 8 == 4) { c.bw[k] = wi; c.bf[k] = f; c.bp[k] = pdf; ++k; }
+            sum += w;
+            h = mf_normalize(mf_add(c.wo, wi));
+            {
+                mf_real q = MF_R(1.0) - mf_clamp(mf_dot(c.wo, h), MF_R(0.0), MF_R(1.0)), q2 = q * q;
+                fres += w * q2 * q2 * q;
+            }
+            avg = mf_add(avg, mf_scale(wi, w));
+        }
+    c.albedo = sum / (mf_real)(64 * c.n);
+    out->albedo = c.albedo;
+    out->fresnel = fres / (mf_real)(64 * c.n);
+    if (!(c.albedo > MF_R(1e-12))) {   /* no lobe: the clamped cosine, zero albedo */
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        out->ltc = mf_ltc_from_matrix9(I9);
+        out->inv[0] = out->inv[2] = MF_R(1.0); out->inv[1] = out->inv[3] = MF_R(0.0);
+        out->error = MF_R(0.0);
+        out->params[0] = out->params[1] = MF_R(1.0); out->params[2] = MF_R(0.0);
+        MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp);
+        return MF_SUCCESS;
+    }
+    for (k = 0; k < c.n; ++k) c.bf[k] /= c.albedo;
+    avg.y = MF_R(0.0);
+    c.Z = mf_normalize(avg);
+    if (!(c.Z.z > MF_R(0.0))) c.Z = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    c.X = mf_vec3_make(c.Z.z, MF_R(0.0), -c.Z.x);
+    if (guess) { p[0] = guess[0]; p[1] = guess[1]; p[2] = guess[2]; }
+    else { p[0] = p[1] = MF_R(0.5); p[2] = MF_R(0.0); }
+    out->error = mf__nelder_mead(&c, p, MF_R(0.1), 400);
+    out->error = mf__nelder_mead(&c, p, MF_R(0.02), 400);   /* restart: Nelder-Mead can stall */
+    out->params[0] = MF_FABS(p[0]); out->params[1] = MF_FABS(p[1]); out->params[2] = p[2];
+    out->ltc = mf__fit_ltc(&c, p);
+    /* normalized inverse, table form (the LTC is invariant to scaling M) */
+    {
+        const mf_real *iv = out->ltc.Minv;
+        out->inv[0] = iv[0] / iv[8]; out->inv[1] = iv[2] / iv[8];
+        out->inv[2] = iv[4] / iv[8]; out->inv[3] = iv[6] / iv[8];
+    }
+    MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp);
+    return MF_SUCCESS;
+}
+
+static mf_ndf mf__family(int kind, mf_real alpha, mf_real gamma)
+{
+    switch (kind) {
+    case MF_NDF_BECKMANN: return mf_beckmann(alpha, alpha);
+    case MF_NDF_GTR: return mf_gtr(alpha, gamma);
+    case MF_NDF_STUDENT_T: return mf_student_t(alpha, alpha, gamma);
+    default: return mf_ggx(alpha, alpha);
+    }
+}
+
+/* grid: t = sqrt(1 - cos theta) in [0, 1], v = sqrt(alpha) in [0, 1] */
+static mf_real mf__ltc_grid_cos(int i, int n)
+{
+    mf_real t = (mf_real)i / (mf_real)(n - 1);
+    return mf_max(MF_R(1.0) - t * t, MF_R(1e-3));
+}
+static mf_real mf__ltc_grid_alpha(int j, int n)
+{
+    mf_real v = (mf_real)j / (mf_real)(n - 1);
+    return mf_max(v * v, MF_LTC_ALPHA_MIN);
+}
+
+MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
+                                   mf_progress_fn progress, void *ctx)
+{
+    int i, j, done = 0;
+    mf_real prev0[3], prev[3];
+    if (!t) return MF_ERROR_INVALID_ARGUMENT;
+    t->data = 0; t->n_theta = t->n_alpha = 0;
+    if (n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096 || kind < 0 || kind > MF_NDF_STUDENT_T)
+        return MF_ERROR_INVALID_ARGUMENT;
+    t->data = (float *)MF_MALLOC(sizeof(float) * 6 * (size_t)n_theta * (size_t)n_alpha);
+    if (!t->data) return MF_ERROR_OUT_OF_MEMORY;
+    t->n_theta = n_theta; t->n_alpha = n_alpha;
+    /* roughest first, each view angle warm-started from its neighbour */
+    prev0[0] = prev0[1] = MF_R(1.0); prev0[2] = MF_R(0.0);
+    for (j = n_alpha - 1; j >= 0; --j) {
+        mf_ndf d = mf__family(kind, mf__ltc_grid_alpha(j, n_alpha), gamma);
+        prev[0] = prev0[0]; prev[1] = prev0[1]; prev[2] = prev0[2];
+        for (i = 0; i < n_theta; ++i) {
+            mf_ltc_fit_result r;
+            float *e = t->data + 6 * ((size_t)j * (size_t)n_theta + (size_t)i);
+            mf_result res = mf_ltc_fit(&d, 0, 0, mf__ltc_grid_cos(i, n_theta), prev, &r);
+            if (res != MF_SUCCESS) { mf_ltc_table_release(t); return res; }
+            e[0] = (float)r.inv[0]; e[1] = (float)r.inv[1]; e[2] = (float)r.inv[2]; e[3] = (float)r.inv[3];
+            e[4] = (float)r.albedo; e[5] = (float)r.fresnel;
+            prev[0] = r.params[0]; prev[1] = r.params[1]; prev[2] = r.params[2];
+            if (i == 0) { prev0[0] = r.params[0]; prev0[1] = r.params[1]; prev0[2] = r.params[2]; }
+            if (progress) progress(++done, n_theta * n_alpha, ctx);
+        }
+    }
+    return MF_SUCCESS;
+}
+
+MFDEF void mf_ltc_table_release(mf_ltc_table *t)
+{
+    if (!t) return;
+    MF_FREE(t->data);
+    t->data = 0;
+    t->n_theta = t->n_alpha = 0;
+}
+
+static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_theta_o, mf_real alpha,
+                             mf_real *albedo, mf_real *fresnel)
+{
+    mf_real ct = mf_clamp(cos_theta_o, MF_R(0.0), MF_R(1.0)), a = mf_clamp(alpha, MF_R(0.0), MF_R(1.0));
+    mf_real x = MF_SQRT(MF_R(1.0) - ct) * (mf_real)(nt - 1), y = MF_SQRT(a) * (mf_real)(na - 1), fx, fy, v[6];
+    int ix = (int)x, iy = (int)y, k;
+    if (ix > nt - 2) ix = nt - 2;
+    if (iy > na - 2) iy = na - 2;
+    if (ix < 0) ix = 0;
+    if (iy < 0) iy = 0;
+    fx = mf_clamp(x - (mf_real)ix, MF_R(0.0), MF_R(1.0)); fy = mf_clamp(y - (mf_real)iy, MF_R(0.0), MF_R(1.0));
+    for (k = 0; k < 6; ++k) {
+        const float *e00 = data + 6 * (iy * nt + ix), *e10 = e00 + 6, *e01 = e00 + 6 * nt, *e11 = e01 + 6;
+        v[k] = (MF_R(1.0) - fy) * ((MF_R(1.0) - fx) * (mf_real)e00[k] + fx * (mf_real)e10[k]) +
+               fy * ((MF_R(1.0) - fx) * (mf_real)e01[k] + fx * (mf_real)e11[k]);
+    }
+    if (albedo) *albedo = v[4];
+    if (fresnel) *fresnel = v[5];
+    return mf_ltc_from_inverse(v[0], v[1], v[2], v[3], MF_R(1.0));
+}
+
+MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
+                                 mf_real *albedo, mf_real *fresnel)
+{
+    if (!t || !t->data || t->n_theta < 2 || t->n_alpha < 2) {
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        if (albedo) *albedo = MF_R(0.0);
+        if (fresnel) *fresnel = MF_R(0.0);
+        return mf_ltc_from_matrix9(I9);
+    }
+    return mf__ltc_lookup(t->data, t->n_theta, t->n_alpha, cos_theta_o, alpha, albedo, fresnel);
+}
+
+#ifndef MF_NO_LTC_TABLE
+static const float *mf__ltc_ggx_data(int *n);   /* the built-in table: 14_ltc_table.h */
+MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha)
+{
+    int n;
+    const float *t = mf__ltc_ggx_data(&n);
+    return mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, 0);
+}
+MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha)
+{
+    int n;
+    const float *t = mf__ltc_ggx_data(&n);
+    mf_real a;
+    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, &a, 0);
+    return a;
+}
+MFDEF mf_real mf_ltc_ggx_fresnel(mf_real cos_theta_o, mf_real alpha)
+{
+    int n;
+    const float *t = mf__ltc_ggx_data(&n);
+    mf_real f;
+    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, &f);
+    return f;
+}
+MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha)
+{
+    int n;
+    const float *t = mf__ltc_ggx_data(&n);
+    if (n_theta) *n_theta = n;
+    if (n_alpha) *n_alpha = n;
+    return t;
+}
+#endif

@@ -1,0 +1,79 @@
+#!/bin/sh
+# Assembles the single header microfacet.h from the module sources src/*.h.
+#
+#   sh tools/amalgamate.sh > microfacet.h      (what `make header` runs)
+#
+# Modules are read in file-name order (src/00_intro.h ... src/99_outro.h); the
+# number in a name is the module's place in the dependency order: a module may
+# use only what the modules before it define. Inside a module, marker lines
+# start its parts, and the header gathers each part from every module in turn:
+#
+#   /* @decl */  types needed before the mf_ndf type (configuration, vectors,
+#                the per-kind parameter structs); outside extern "C"
+#   /* @api */   declarations and the hot inline paths: what every includer
+#                compiles (the default part)
+#   /* @cold */  code that device code may call but host includers need not
+#                compile: emitted once in the implementation on host builds,
+#                and in every translation unit under nvcc
+#   /* @impl */  the implementation section (builders, loaders, fitters,
+#                generators, data tables)
+#
+# 00_intro.h (the top comment) and 99_outro.h (the license) are copied as they
+# are. Every function declared with MFDEF or MF_COLD in a module gets a
+# precision-tagged symbol name (see MF__SYM in 01_config.h), listed where
+# 01_config.h holds the line "/* @symbols */". Needs only sh and awk.
+set -e
+cd "$(dirname "$0")/.."
+files=$(ls src/[0-9]*.h | LC_ALL=C sort)
+awk '
+function emit(s) { printf "%s", s }
+FNR == 1 {
+    part = "api"; base = FILENAME; sub(/^.*\//, "", base)
+    names = names " " base
+    if (base ~ /^00_/) part = "intro"
+    if (base ~ /^99_/) part = "outro"
+}
+/^\/\* @(decl|api|cold|impl) \*\/$/ { part = $2; sub(/^@/, "", part); next }
+{
+    if (part == "decl" && $0 == "/* @symbols */") { buf[part] = buf[part] "@SYMBOLS@\n"; next }
+    buf[part] = buf[part] $0 "\n"
+    if ((part == "api" || part == "decl") && $0 ~ /^(MFDEF|MF_COLD) [^(]*[ *]mf_[A-Za-z0-9_]+\(/) {
+        s = $0; sub(/\(.*/, "", s); sub(/^.*[ *]/, "", s)
+        if (!(s in seen)) { seen[s] = 1; syms = syms "#define " s " MF__SYM(" s ")\n" }
+    }
+}
+END {
+    emit("/* microfacet.h - GENERATED FILE, do not edit: edit the module sources in\n")
+    emit(" * src/ and run `make header` (tools/amalgamate.sh). Assembled from:\n")
+    n = split(names, list, " ")
+    line = " *  "
+    for (i = 1; i <= n; ++i) {
+        if (length(line) + length(list[i]) > 78) { emit(line "\n"); line = " *  " }
+        line = line " " list[i]
+    }
+    emit(line "\n */\n")
+    emit(buf["intro"])
+    emit("#ifndef MICROFACET_H\n#define MICROFACET_H\n\n")
+    d = buf["decl"]; sub(/@SYMBOLS@\n/, syms, d)
+    emit(d)
+    emit("\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n")
+    emit(buf["api"])
+    emit("\n#ifdef __cplusplus\n}\n#endif\n\n#endif /* MICROFACET_H */\n\n")
+    emit("/* ======================================================================== */\n")
+    emit("/* == Cold paths: compiled once, in the implementation, on host builds;    */\n")
+    emit("/* == in every translation unit under nvcc (device code calls them).       */\n")
+    emit("/* ======================================================================== */\n")
+    emit("#if (defined(MICROFACET_IMPLEMENTATION) || defined(__CUDACC__)) && !defined(MICROFACET_COLD_DONE)\n")
+    emit("#define MICROFACET_COLD_DONE\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n")
+    emit(buf["cold"])
+    emit("\n#ifdef __cplusplus\n}\n#endif\n#endif /* cold paths */\n\n")
+    emit("/* ======================================================================== */\n")
+    emit("/* == Implementation: builders, loaders, fitters, generators, data tables  */\n")
+    emit("/* ======================================================================== */\n")
+    emit("#if defined(MICROFACET_IMPLEMENTATION) && !defined(MICROFACET_IMPLEMENTATION_DONE)\n")
+    emit("#define MICROFACET_IMPLEMENTATION_DONE\n#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n")
+    emit(buf["impl"])
+    emit("\n#ifdef __cplusplus\n}\n#endif\n#endif /* MICROFACET_IMPLEMENTATION */\n")
+    emit(buf["outro"])
+}
+' $files
