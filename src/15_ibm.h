@@ -117,6 +117,139 @@ MF_INLINE unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
     return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
 }
 
+/* ---- bins (Sec. 5.4.2): b x b squares over [-1,1]^2 of (n.x, n.y) ---- */
+
+MF_INLINE int mf__ibm_cell(mf_real v, int b)
+{
+    mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
+    if (!(f > MF_R(0.0))) return 0;              /* also NaN */
+    return f >= (mf_real)b ? b - 1 : (int)f;     /* truncation = floor for f > 0 */
+}
+
+/* b*b: the number of bins (those outside the unit disk stay empty). */
+MF_INLINE int mf_ibm_bin_count(const mf_ibm *ibm)
+{
+    return ibm && ibm->data ? ibm->res * ibm->res : 0;
+}
+
+/* beta(n) = floor(b (n.x/2 + 1/2)) + b floor(b (n.y/2 + 1/2)) for the
+ * normalized n; -1 for n below the horizon, zero or not finite. */
+MF_INLINE int mf_ibm_bin_of(const mf_ibm *ibm, mf_vec3 n)
+{
+    if (!ibm || !ibm->data) return -1;
+    n = mf_normalize(n);
+    if (!(n.z >= MF_R(0.0)) || mf_dot(n, n) == MF_R(0.0)) return -1;
+    return mf__ibm_cell(n.x, ibm->res) + ibm->res * mf__ibm_cell(n.y, ibm->res);
+}
+
+/* Number of texels in bin `bin`. */
+MF_COLD int mf_ibm_bin_texels(const mf_ibm *ibm, int bin);
+
+/* The normal that represents bin `bin` in C and in sampling: the mean of the
+ * bin's texel normals (their (x, y) averaged, rounded to a multiple of 1/65536
+ * of the bin - exact for the normal (0,0,1) - lifted to the hemisphere); the
+ * bin center beta^-1(j, 1/2, 1/2) for an empty bin. The thesis uses the center; the mean is exact for a bin whose texels
+ * share one normal (flat regions, flakes) and never farther from them. */
+MF_COLD mf_vec3 mf_ibm_bin_normal(const mf_ibm *ibm, int bin);
+
+/* The bin of texel (x, y) (wrapped into the map) from the bin map. */
+MF_COLD int mf_ibm_texel_bin(const mf_ibm *ibm, int x, int y);
+
+/* Sets the distribution whose Smith G2 is the normal map's shadowing G_x of
+ * Eq. 3.29 (e.g. the GTR the flakes were drawn from, as in Sec. 5.5.4); NULL:
+ * G_x = 1. mf_ibm_build and mf_ibm_load set mf_beckmann(shadow_ax, shadow_ay),
+ * the Beckmann roughness of the map's RMS slopes (sqrt(2 E[s^2]) per axis). */
+MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
+
+/* ---- footprints: periods, pieces, exact areas ---- */
+
+#define MF__IBM_NONE 0     /* no texel (center not finite) */
+#define MF__IBM_POINT 1    /* degenerate footprint: the texel at the center */
+#define MF__IBM_EXACT 2    /* full periods plus exact pieces */
+#define MF__IBM_GLOBAL 3   /* too many periods: the whole map's histogram */
+
+/* ---- bin weights: a window of bins around a center bin ---- */
+
+/* Fraction of the footprint's area whose texels fall in `bin` (texels are
+ * constant squares; Eq. 5.3, 5.8). Exact (polygon clipping) for any
+ * parallelogram, rectangles through a fast path, wrapping across the border.
+ * Footprints covering whole periods count them from the bin sizes; if the
+ * footprint's boundary cuts more than MF_IBM_MAX_PIECES period cells the
+ * weight is that of the whole map (n_bin / N) - exact when the footprint is a
+ * union of whole periods, otherwise off by at most the cut cells' share of
+ * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
+ * the bin of the texel at the center, else 0; non-finite center: 0. */
+MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
+
+/* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
+ * ibm->radius: the 21 bins of Sec. 5.4.2 for r = 2) that hold texels, with
+ * their weights, in one traversal. bins and weights must hold
+ * MF_IBM_MAX_WINDOW entries; returns how many were written. */
+MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
+                                           mf_real *weights);
+
+/* ---- the filtered BRDF (Eq. 5.13), its pdf (Eq. 5.16) and sampling ---- */
+
+/* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
+ * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
+ * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
+ * Truncated like Eq. 5.13 (see the README for the measured truncation); for
+ * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
+ * the horizon and for degenerate input. */
+MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
+
+/* Density of mf_ibm_sample per unit solid angle of wi (Eq. 5.16 with the
+ * visible-normal density of each bin's lobe): sum of W_j D_wo(h; t_j) /
+ * (4 wo.h) over the same bins as mf_ibm_brdf. It integrates to 1 minus the
+ * no-sample mass of mf_ibm_sample. */
+MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
+
+/* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
+MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
+
+/* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
+ * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
+ * of the flake Beckmann around t_j for wo; wi = reflect(wo, m). The zero vector
+ * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
+ * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
+ * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
+MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                mf_real u3, mf_real u4);
+
+/* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
+/* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
+ * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
+ * normalized before binning), row-major, texel (x, y) at index y*width + x.
+ * flake_alpha is the Beckmann flake roughness (clamped to [MF_ALPHA_MIN,
+ * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
+ * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
+ * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
+ * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
+ * and the cut in sigmas (0: 3); the neighbourhood radius r grows with b so
+ * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
+ * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
+ * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
+ * sizes, alpha <= 0 or NaN, resolution or cut out of range
+ * (MF_ERROR_INVALID_ARGUMENT); a NaN, non-unit or below-horizon normal
+ * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
+ * allocated on failure, and *ibm is zeroed. */
+MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
+MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
+                                int resolution, mf_real cut_sigmas);
+MFDEF void mf_ibm_release(mf_ibm *ibm);
+/* Bytes held: the single integer array (ibm->words * 4). */
+MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
+/* Save and load (no stdio): mf_ibm_save copies the integer array (native
+ * byte order) to buf when cap is large enough and returns the bytes it needs
+ * (0 for an empty map). mf_ibm_load copies such a buffer (any alignment) into
+ * a new map after validating everything a query reads: magic, version, sizes,
+ * a checksum, the index, every texel position (in range, sorted, each texel
+ * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
+ * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
+ * mf_ibm_set_shadowing is not saved: set it again after loading. */
+MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
+MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
+/* @cold */
 /* one field of `w` bits (w <= 32) of a packed array */
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
@@ -165,31 +298,6 @@ MF_INLINE void mf__ibm_unmorton(int kx, int ky, unsigned int c, int *x, int *y)
     *y = (int)uy;
 }
 
-/* ---- bins (Sec. 5.4.2): b x b squares over [-1,1]^2 of (n.x, n.y) ---- */
-
-MF_INLINE int mf__ibm_cell(mf_real v, int b)
-{
-    mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
-    if (!(f > MF_R(0.0))) return 0;              /* also NaN */
-    return f >= (mf_real)b ? b - 1 : (int)f;     /* truncation = floor for f > 0 */
-}
-
-/* b*b: the number of bins (those outside the unit disk stay empty). */
-MF_INLINE int mf_ibm_bin_count(const mf_ibm *ibm)
-{
-    return ibm && ibm->data ? ibm->res * ibm->res : 0;
-}
-
-/* beta(n) = floor(b (n.x/2 + 1/2)) + b floor(b (n.y/2 + 1/2)) for the
- * normalized n; -1 for n below the horizon, zero or not finite. */
-MF_INLINE int mf_ibm_bin_of(const mf_ibm *ibm, mf_vec3 n)
-{
-    if (!ibm || !ibm->data) return -1;
-    n = mf_normalize(n);
-    if (!(n.z >= MF_R(0.0)) || mf_dot(n, n) == MF_R(0.0)) return -1;
-    return mf__ibm_cell(n.x, ibm->res) + ibm->res * mf__ibm_cell(n.y, ibm->res);
-}
-
 /* start of bin j's block in the lists section */
 MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
 {
@@ -217,8 +325,7 @@ MF_INLINE unsigned int mf__ibm_bin_info(const mf_ibm *ibm, int j, unsigned int *
     return n;
 }
 
-/* Number of texels in bin `bin`. */
-MF_INLINE int mf_ibm_bin_texels(const mf_ibm *ibm, int bin)
+MF_COLD int mf_ibm_bin_texels(const mf_ibm *ibm, int bin)
 {
     unsigned int base, tab;
     int k;
@@ -226,12 +333,7 @@ MF_INLINE int mf_ibm_bin_texels(const mf_ibm *ibm, int bin)
     return (int)mf__ibm_bin_info(ibm, bin, &base, &tab, &k);
 }
 
-/* The normal that represents bin `bin` in C and in sampling: the mean of the
- * bin's texel normals (their (x, y) averaged, rounded to a multiple of 1/65536
- * of the bin - exact for the normal (0,0,1) - lifted to the hemisphere); the
- * bin center beta^-1(j, 1/2, 1/2) for an empty bin. The thesis uses the center; the mean is exact for a bin whose texels
- * share one normal (flat regions, flakes) and never farther from them. */
-MF_INLINE mf_vec3 mf_ibm_bin_normal(const mf_ibm *ibm, int bin)
+MF_COLD mf_vec3 mf_ibm_bin_normal(const mf_ibm *ibm, int bin)
 {
     unsigned int q;
     mf_real b, x, y, r2;
@@ -245,8 +347,7 @@ MF_INLINE mf_vec3 mf_ibm_bin_normal(const mf_ibm *ibm, int bin)
     return mf_vec3_make(x, y, MF_SQRT(MF_R(1.0) - r2));
 }
 
-/* The bin of texel (x, y) (wrapped into the map) from the bin map. */
-MF_INLINE int mf_ibm_texel_bin(const mf_ibm *ibm, int x, int y)
+MF_COLD int mf_ibm_texel_bin(const mf_ibm *ibm, int x, int y)
 {
     unsigned int v;
     if (!ibm || !ibm->data) return -1;
@@ -256,23 +357,12 @@ MF_INLINE int mf_ibm_texel_bin(const mf_ibm *ibm, int x, int y)
     return (int)(v & ((1u << ibm->axis_bits) - 1u)) + ibm->res * (int)(v >> ibm->axis_bits);
 }
 
-/* Sets the distribution whose Smith G2 is the normal map's shadowing G_x of
- * Eq. 3.29 (e.g. the GTR the flakes were drawn from, as in Sec. 5.5.4); NULL:
- * G_x = 1. mf_ibm_build and mf_ibm_load set mf_beckmann(shadow_ax, shadow_ay),
- * the Beckmann roughness of the map's RMS slopes (sqrt(2 E[s^2]) per axis). */
-MF_INLINE void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d)
+MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d)
 {
     if (!ibm) return;
     ibm->has_shadow = d ? 1 : 0;
     if (d) ibm->shadow = *d;
 }
-
-/* ---- footprints: periods, pieces, exact areas ---- */
-
-#define MF__IBM_NONE 0     /* no texel (center not finite) */
-#define MF__IBM_POINT 1    /* degenerate footprint: the texel at the center */
-#define MF__IBM_EXACT 2    /* full periods plus exact pieces */
-#define MF__IBM_GLOBAL 3   /* too many periods: the whole map's histogram */
 
 typedef struct mf__ibm_fp {
     int mode, tx, ty;          /* POINT: the texel */
@@ -550,8 +640,6 @@ MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
     return n >= 3 ? mf_max(mf__ibm_shoelace(xa, ya, n), MF_R(0.0)) : MF_R(0.0);
 }
 
-/* ---- bin weights: a window of bins around a center bin ---- */
-
 /* The bins whose weights a query needs: those of the window (cx + dx, cy + dy),
  * |dx|, |dy| <= r, that are listed; slot maps a window cell to its list entry. */
 typedef struct mf__ibm_set {
@@ -744,16 +832,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
 
-/* Fraction of the footprint's area whose texels fall in `bin` (texels are
- * constant squares; Eq. 5.3, 5.8). Exact (polygon clipping) for any
- * parallelogram, rectangles through a fast path, wrapping across the border.
- * Footprints covering whole periods count them from the bin sizes; if the
- * footprint's boundary cuts more than MF_IBM_MAX_PIECES period cells the
- * weight is that of the whole map (n_bin / N) - exact when the footprint is a
- * union of whole periods, otherwise off by at most the cut cells' share of
- * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
- * the bin of the texel at the center, else 0; non-finite center: 0. */
-MF_INLINE mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f)
+MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f)
 {
     mf__ibm_fp p;
     mf__ibm_set s;
@@ -765,11 +844,7 @@ MF_INLINE mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footpri
     return s.w[0];
 }
 
-/* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
- * ibm->radius: the 21 bins of Sec. 5.4.2 for r = 2) that hold texels, with
- * their weights, in one traversal. bins and weights must hold
- * MF_IBM_MAX_WINDOW entries; returns how many were written. */
-MF_INLINE int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
+MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
                                            mf_real *weights)
 {
     mf__ibm_fp p;
@@ -789,8 +864,6 @@ MF_INLINE int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint
     for (i = 0; i < s.n; ++i) { bins[i] = s.bin[i]; weights[i] = s.w[i]; }
     return s.n;
 }
-
-/* ---- the filtered BRDF (Eq. 5.13), its pdf (Eq. 5.16) and sampling ---- */
 
 /* The lobes of the bins around beta(h): for each non-empty bin j of the
  * neighbourhood with wo.t_j > 0, the texel contribution C (Eq. 3.29, no
@@ -854,23 +927,13 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     return mf_min(sf, MF_BIG);
 }
 
-/* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
- * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
- * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
- * Truncated like Eq. 5.13 (see the README for the measured truncation); for
- * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
- * the horizon and for degenerate input. */
-MF_INLINE mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi)
+MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi)
 {
     if (!ibm || !ibm->data || !(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     return mf__ibm_lobes(ibm, f, wo, wi, 1, (mf_real *)0);
 }
 
-/* Density of mf_ibm_sample per unit solid angle of wi (Eq. 5.16 with the
- * visible-normal density of each bin's lobe): sum of W_j D_wo(h; t_j) /
- * (4 wo.h) over the same bins as mf_ibm_brdf. It integrates to 1 minus the
- * no-sample mass of mf_ibm_sample. */
-MF_INLINE mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi)
+MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi)
 {
     mf_real pdf = MF_R(0.0);
     if (!ibm || !ibm->data || !(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
@@ -878,8 +941,7 @@ MF_INLINE mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 w
     return pdf;
 }
 
-/* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
-MF_INLINE mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
+MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
 {
     mf_real tmp = MF_R(0.0);
     if (!pdf) pdf = &tmp;
@@ -888,13 +950,7 @@ MF_INLINE mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_v
     return mf__ibm_lobes(ibm, f, wo, wi, 1, pdf);
 }
 
-/* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
- * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
- * of the flake Beckmann around t_j for wo; wi = reflect(wo, m). The zero vector
- * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
- * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
- * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
-MF_INLINE mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
                                 mf_real u3, mf_real u4)
 {
     mf_vec3 none = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), t, tt, tb, o, m, wi, h;
@@ -941,40 +997,6 @@ MF_INLINE mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     }
     return wi;
 }
-
-/* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
-/* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
- * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
- * normalized before binning), row-major, texel (x, y) at index y*width + x.
- * flake_alpha is the Beckmann flake roughness (clamped to [MF_ALPHA_MIN,
- * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
- * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
- * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
- * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
- * and the cut in sigmas (0: 3); the neighbourhood radius r grows with b so
- * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
- * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
- * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
- * sizes, alpha <= 0 or NaN, resolution or cut out of range
- * (MF_ERROR_INVALID_ARGUMENT); a NaN, non-unit or below-horizon normal
- * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
- * allocated on failure, and *ibm is zeroed. */
-MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
-MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                int resolution, mf_real cut_sigmas);
-MFDEF void mf_ibm_release(mf_ibm *ibm);
-/* Bytes held: the single integer array (ibm->words * 4). */
-MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
-/* Save and load (no stdio): mf_ibm_save copies the integer array (native
- * byte order) to buf when cap is large enough and returns the bytes it needs
- * (0 for an empty map). mf_ibm_load copies such a buffer (any alignment) into
- * a new map after validating everything a query reads: magic, version, sizes,
- * a checksum, the index, every texel position (in range, sorted, each texel
- * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
- * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
- * mf_ibm_set_shadowing is not saved: set it again after loading. */
-MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
-MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 /* @impl */
 /* ---- Inverse Bin Map ---- */
 
