@@ -15,7 +15,7 @@ HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 
 .PHONY: all test test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check ltc-table
+        header header-check config-check ltc-table
 
 all: test
 
@@ -24,6 +24,9 @@ SRC_MODULES := $(sort $(wildcard src/*.h))
 header:
 	@sh tools/amalgamate.sh > microfacet.h.tmp && mv microfacet.h.tmp microfacet.h
 	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/"
+# make test runs this: module opt-outs, the allocator pair, precision mixing
+config-check: | $(BUILD)
+	@sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 # make test runs this: the committed header must be what the generator makes
 header-check:
 	@sh tools/amalgamate.sh | cmp -s - microfacet.h || \

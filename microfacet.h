@@ -1569,6 +1569,7 @@ MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     lo = mf_lambda(d, wo);
     return (MF_R(1.0) + lo) / (MF_R(1.0) + lo + mf_lambda(d, wi));
 }
+#ifndef MF_NO_LEADR
 /* ======================================================================== */
 /* == 10. LEADR slope moments                                               */
 /* ======================================================================== */
@@ -1908,6 +1909,7 @@ MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normal
                                           mf_real alpha_x, mf_real alpha_y);
 MFDEF void mf_leadr_map_release(mf_leadr_map *m);
 MFDEF size_t mf_leadr_map_memory_bytes(const mf_leadr_map *m);
+#endif /* MF_NO_LEADR */
 /* ======================================================================== */
 /* == 11. Linearly Transformed Cosines                                      */
 /* ======================================================================== */
@@ -2207,6 +2209,7 @@ MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
  * floats per entry: the inverse-matrix entries inv0..inv3 (mf_ltc_from_inverse),
  * the albedo and the Fresnel column. Read through mf_ltc_ggx, mf_ltc_ggx_albedo,
  * mf_ltc_ggx_fresnel and mf_ltc_ggx_table (13_ltc.h). */
+#ifndef MF_NO_IBM
 /* ======================================================================== */
 /* == 12. Inverse Bin Map                                                   */
 /* ======================================================================== */
@@ -2457,6 +2460,8 @@ MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
  * mf_ibm_set_shadowing is not saved: set it again after loading. */
 MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
 MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_MICROSURFACE
 /* ======================================================================== */
 /* == 13. Microsurface generation and a virtual gonioreflectometer          */
 /* ======================================================================== */
@@ -2612,6 +2617,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
  * cell of mf_brdf(d, wo, wi) wo.z dwo, by an n x n midpoint rule in
  * (cos theta, phi) per cell (n in 1..64). */
 MFDEF mf_result mf_gonio_model(const mf_gonio *g, const mf_ndf *d, mf_vec3 wi, int n, mf_real *out);
+#endif /* MF_NO_MICROSURFACE */
 
 #ifdef __cplusplus
 }
@@ -3494,6 +3500,7 @@ MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real
     m = mf__iso_sample_visible(d, cv, sv, u1, u2);
     return mf_normalize(mf_vec3_make(ax * (cp * m.x - sp * m.y), ay * (sp * m.x + cp * m.y), m.z));
 }
+#ifndef MF_NO_IBM
 /* one field of `w` bits (w <= 32) of a packed array */
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
@@ -4241,6 +4248,7 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
     }
     return wi;
 }
+#endif /* MF_NO_IBM */
 
 #ifdef __cplusplus
 }
@@ -4266,6 +4274,9 @@ MFDEF const char *mf_result_string(mf_result r)
     default: return "unknown result";
     }
 }
+
+/* 1 if n is a positive power of two (the map builders' sizes). */
+MF_INLINE int mf__pow2(int n) { return n > 0 && (n & (n - 1)) == 0; }
 /* ---- Tabulated (piecewise-linear) distributions ---- */
 
 static void mf__tab_zero(mf_tabulated *t)
@@ -4511,9 +4522,9 @@ MFDEF size_t mf_tabulated_memory_bytes(const mf_tabulated *t)
 {
     return t && t->block ? t->bytes : 0;
 }
+#ifndef MF_NO_LEADR
 /* ---- LEADR moment maps ---- */
 
-static int mf__pow2(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 /* allocates the pyramid for level 0 already filled in m->texels[0..w*h) */
 static mf_result mf__leadr_alloc(mf_leadr_map *m, int w, int h)
@@ -4618,6 +4629,7 @@ MFDEF size_t mf_leadr_map_memory_bytes(const mf_leadr_map *m)
     if (!m || !m->texels || m->levels < 1) return 0;
     return sizeof(mf_leadr) * (m->offset[m->levels - 1] + 1);
 }
+#endif /* MF_NO_LEADR */
 /* ---- LTC fitting ---- */
 
 typedef struct mf__fit_ctx {
@@ -6984,6 +6996,7 @@ static const float *mf__ltc_ggx_data(int *n)
     return data;
 }
 #endif
+#ifndef MF_NO_IBM
 /* ---- Inverse Bin Map ---- */
 
 /* mf_real <-> float bits, without a header for memcpy */
@@ -7403,6 +7416,8 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes)
     mf__ibm_set_fields(ibm);
     return MF_SUCCESS;
 }
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_MICROSURFACE
 /* ---- Microsurface generation and the virtual gonioreflectometer ---- */
 
 /* PCG32 (O'Neill 2014), the generator's and the tracer's own: deterministic
@@ -8440,6 +8455,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
     MF_FREE(h); MF_FREE(top); MF_FREE(acc);
     return MF_SUCCESS;
 }
+#endif /* MF_NO_MICROSURFACE */
 
 #ifdef __cplusplus
 }

@@ -226,3 +226,6 @@ MFDEF const char *mf_result_string(mf_result r)
     default: return "unknown result";
     }
 }
+
+/* 1 if n is a positive power of two (the map builders' sizes). */
+MF_INLINE int mf__pow2(int n) { return n > 0 && (n & (n - 1)) == 0; }

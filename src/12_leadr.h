@@ -1,3 +1,4 @@
+/* @optional MF_NO_LEADR */
 /* @api */
 /* ======================================================================== */
 /* == 10. LEADR slope moments                                               */
@@ -341,7 +342,6 @@ MFDEF size_t mf_leadr_map_memory_bytes(const mf_leadr_map *m);
 /* @impl */
 /* ---- LEADR moment maps ---- */
 
-static int mf__pow2(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 /* allocates the pyramid for level 0 already filled in m->texels[0..w*h) */
 static mf_result mf__leadr_alloc(mf_leadr_map *m, int w, int h)

@@ -1,3 +1,4 @@
+/* @optional MF_NO_MICROSURFACE */
 /* @api */
 /* ======================================================================== */
 /* == 13. Microsurface generation and a virtual gonioreflectometer          */

@@ -6,6 +6,8 @@ passed=0; failed=0
 if [ -n "$make_cmd" ]; then
   if $make_cmd --no-print-directory header-check; then passed=$((passed + 1)); echo "header check: ok (microfacet.h is src/ assembled)"
   else failed=$((failed + 1)); echo "FAIL header check"; fi
+  if $make_cmd --no-print-directory config-check; then passed=$((passed + 1))
+  else failed=$((failed + 1)); echo "FAIL config check"; fi
   if $make_cmd --no-print-directory warnings; then passed=$((passed + 1)); echo "warnings check: ok"
   else failed=$((failed + 1)); echo "FAIL warnings check"; fi
 fi

@@ -18,6 +18,9 @@
 #   /* @impl */  the implementation section (builders, loaders, fitters,
 #                generators, data tables)
 #
+# A module whose first line is "/* @optional MF_NO_X */" can be left out by
+# defining MF_NO_X: each of its parts is wrapped in #ifndef MF_NO_X.
+#
 # 00_intro.h (the top comment) and 99_outro.h (the license) are copied as they
 # are. Every function declared with MFDEF or MF_COLD in a module gets a
 # precision-tagged symbol name (see MF__SYM in 01_config.h), listed where
@@ -27,14 +30,19 @@ cd "$(dirname "$0")/.."
 files=$(ls src/[0-9]*.h | LC_ALL=C sort)
 awk '
 function emit(s) { printf "%s", s }
+function close_guard() { if (guard != "") for (p in open_) if (open_[p]) { buf[p] = buf[p] "#endif /* " guard " */\n"; open_[p] = 0 } }
 FNR == 1 {
+    close_guard(); guard = ""
+    if ($0 ~ /^\/\* @optional MF_NO_[A-Z_]+ \*\/$/) { guard = $3 }
     part = "api"; base = FILENAME; sub(/^.*\//, "", base)
     names = names " " base
     if (base ~ /^00_/) part = "intro"
     if (base ~ /^99_/) part = "outro"
 }
+/^\/\* @optional MF_NO_[A-Z_]+ \*\/$/ { next }
 /^\/\* @(decl|api|cold|impl) \*\/$/ { part = $2; sub(/^@/, "", part); next }
 {
+    if (guard != "" && !open_[part]) { buf[part] = buf[part] "#ifndef " guard "\n"; open_[part] = 1 }
     if (part == "decl" && $0 == "/* @symbols */") { buf[part] = buf[part] "@SYMBOLS@\n"; next }
     buf[part] = buf[part] $0 "\n"
     if ((part == "api" || part == "decl") && $0 ~ /^(MFDEF|MF_COLD) [^(]*[ *]mf_[A-Za-z0-9_]+\(/) {
@@ -43,6 +51,7 @@ FNR == 1 {
     }
 }
 END {
+    close_guard()
     emit("/* microfacet.h - GENERATED FILE, do not edit: edit the module sources in\n")
     emit(" * src/ and run `make header` (tools/amalgamate.sh). Assembled from:\n")
     n = split(names, list, " ")

@@ -1,0 +1,34 @@
+#!/bin/sh
+# Configuration checks of the generated header (part of make test):
+#  1. each module opt-out (MF_NO_*) and all of them together compile without a
+#     warning (-Werror, C99 and C++11) and leave a working library;
+#  2. defining only one of MF_MALLOC / MF_FREE stops with an #error saying so;
+#  3. a unit built with MF_USE_DOUBLE does not link against a float
+#     implementation (nor the reverse), and the error names the tagged symbol;
+#  4. one program may hold both precisions (each unit with its own implementation).
+CC=$1; CXX=$2; WARN=$3; B=$4
+fail() { echo "config check: $*"; exit 1; }
+for opt in "" -DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE \
+           "-DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE"; do
+  for prec in "" -DMF_USE_DOUBLE; do
+    $CC -std=c99 $WARN -Werror $opt $prec -I. tests/optout_check.c -o $B/optout -lm || fail "opt-out '$opt $prec' (C)"
+    $B/optout || fail "opt-out '$opt $prec' does not work"
+  done
+done
+for opt in "" "-DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE"; do
+  $CXX -x c++ -std=c++11 $WARN -Werror $opt -I. -c tests/optout_check.c -o $B/optout_cxx.o || fail "opt-out '$opt' (C++)"
+done
+for one in "-DMF_MALLOC(n)=malloc(n)" "-DMF_FREE(p)=free(p)"; do
+  out=$($CC -std=c99 "$one" -I. -c tests/mix_impl.c -o $B/one.o 2>&1) && fail "$one alone compiled"
+  echo "$out" | grep -q "define both or neither" || fail "$one alone: no clear #error"
+done
+$CC -std=c99 -O1 -I. -c tests/mix_impl.c -o $B/impl_f.o || fail "float implementation"
+$CC -std=c99 -O1 -DMF_USE_DOUBLE -I. -c tests/mix_impl.c -o $B/impl_d.o || fail "double implementation"
+out=$($CC -std=c99 -DMF_USE_DOUBLE -I. tests/mix_main.c $B/impl_f.o -o $B/mix_bad -lm 2>&1) && fail "double unit linked against a float implementation"
+echo "$out" | grep -q "mf_tabulated_from_ndf_f64" || fail "double vs float: the link error does not name mf_tabulated_from_ndf_f64"
+out=$($CC -std=c99 -I. tests/mix_main.c $B/impl_d.o -o $B/mix_bad -lm 2>&1) && fail "float unit linked against a double implementation"
+echo "$out" | grep -q "mf_tabulated_from_ndf_f32" || fail "float vs double: the link error does not name mf_tabulated_from_ndf_f32"
+$CC -std=c99 -O1 -DMF_USE_DOUBLE -I. -c tests/mix_other.c -o $B/mix_other_d.o || fail "double half"
+$CC -std=c99 -O1 -DMIX_BOTH -I. tests/mix_main.c $B/impl_f.o $B/mix_other_d.o -o $B/mix_both -lm || fail "both precisions in one program do not link"
+$B/mix_both >/dev/null || fail "both precisions in one program disagree"
+echo "config check: opt-outs, allocator pair, precision mixing: ok"
