@@ -128,6 +128,8 @@ mf_ndf mft_make(const mft_case *c)
     }
 }
 
+void mft_tu_values_main(double *out) { mft_tu_values(out); }
+
 int main(int argc, char **argv)
 {
     int i;

@@ -73,6 +73,28 @@ void test_tabulated(void);
 void test_ibm(void);
 void test_microsurface(void);
 
+/* The same inline and cold-path computations, compiled in each unit that
+ * calls them: test_tu2 compares its own with those of tests/main.c. */
+#define MFT_TU_VALUES 16
+static inline void mft_tu_values(double *out)
+{
+    mf_ndf k[4];
+    mf_vec3 wo = mf_vec3_make(MF_R(0.36), MF_R(0.48), MF_R(0.8)), wi = mf_vec3_make(MF_R(-0.6), MF_R(0.0), MF_R(0.8));
+    int i;
+    k[0] = mf_ggx(MF_R(0.2), MF_R(0.3));
+    k[1] = mf_beckmann(MF_R(0.2), MF_R(0.3));
+    k[2] = mf_gtr(MF_R(0.2), MF_R(1.5));
+    k[3] = mf_student_t(MF_R(0.2), MF_R(0.3), MF_R(3.0));
+    for (i = 0; i < 4; ++i) {
+        mf_vec3 m = mf_sample_visible(&k[i], wo, MF_R(0.3), MF_R(0.7));
+        out[4 * i] = (double)mf_D(&k[i], m);
+        out[4 * i + 1] = (double)mf_lambda(&k[i], wo);
+        out[4 * i + 2] = (double)m.x + (double)mf_sample_D(&k[i], MF_R(0.6), MF_R(0.2)).y;
+        out[4 * i + 3] = (double)mf_brdf(&k[i], wo, wi) + (double)mf_brdf_pdf(&k[i], wo, wi);
+    }
+}
+void mft_tu_values_main(double *out);   /* tests/main.c */
+
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;
 mf_ndf mft_make(const mft_case *c);

@@ -7,6 +7,12 @@
 #include "microfacet.h"
 #include "microfacet.h" /* including twice is harmless */
 
+#ifndef MFT_SECOND_TU
+static void mft_map(mf_real u, mf_real v, mf_real out[2], void *ctx) { (void)ctx; out[0] = u + v; out[1] = u - v; }
+static mf_vec3 mft_env(mf_vec3 wi, mf_real sa, void *ctx) { (void)ctx; (void)sa; return wi; }
+static mf_real mft_brdf_cos(mf_vec3 wo, mf_vec3 wi, void *ctx) { (void)ctx; return wo.z * wi.z; }
+#endif
+
 #ifdef MFT_SECOND_TU
 mf_real mft_second(void);
 mf_real mft_second(void)
@@ -130,6 +136,45 @@ int main(void)
             s += zl + zh + pl + ph + mf_gonio_cell_solid_angle(&go) + mf_gonio_cell_center(&go, mf_gonio_cell(&go, wo)).z;
             mf_gonio_release(&go);
         }
+    }
+    { /* per-kind fast paths, vector helpers, 2x2 matrices */
+        mf_mat2 J = mf_jacobian_2d(mft_map, (void *)0, MF_R(0.2), MF_R(0.3), MF_R(1e-3)), T;
+        mf_vec3 v = mf_add(mf_scale(wo, MF_R(0.5)), mf_normalize(wi));
+        s += mf_beckmann_D(MF_R(0.2), MF_R(0.3), wo) + mf_beckmann_lambda(MF_R(0.2), MF_R(0.3), wo);
+        s += mf_beckmann_sample_visible(MF_R(0.2), MF_R(0.3), wo, MF_R(0.3), MF_R(0.6)).z;
+        s += mf_ggx_D(MF_R(0.2), MF_R(0.3), wo) + mf_ggx_lambda(MF_R(0.2), MF_R(0.3), wo);
+        s += mf_ggx_sample_visible(MF_R(0.2), MF_R(0.3), wo, MF_R(0.3), MF_R(0.6)).z;
+        s += mf_clamp(v.x, MF_R(0.0), MF_R(1.0)) + mf_max(v.y, MF_R(0.0)) + mf_min(v.z, MF_R(1.0));
+        s += mf_mat2_apply(J, wo).x + mf_mat2_apply_transpose(mf_mat2_mul(J, J), wo).y;
+        s += (mf_real)(mf_tension_matrix(J, J, &T) == MF_SUCCESS) + T.m00;
+    }
+    { /* LEADR shading and maps */
+        mf_leadr la = mf_leadr_with_roughness(mf_leadr_from_slope(MF_R(0.1), MF_R(0.2)), MF_R(0.2), MF_R(0.3));
+        mf_real sh[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 }, hm[4 * 4], nm[4 * 4 * 3];
+        mf_leadr_map m;
+        int q;
+        mf_sh9_add_directional(sh, wo, MF_R(1.0));
+        s += mf_sh9_irradiance(sh, wo) + mf_leadr_diffuse_sh9(la, wo, sh, 5);
+        s += mf_leadr_diffuse(la, wo, wi, 5) + mf_leadr_diffuse_noshadow(la, wo, wi, 5);
+        s += mf_leadr_specular_env(la, wo, 5, 1, mft_env, (void *)0).z;
+        for (q = 0; q < 16; ++q) { hm[q] = MF_R(0.01) * (mf_real)(q & 3); nm[3 * q] = MF_R(0.0); nm[3 * q + 1] = MF_R(0.0); nm[3 * q + 2] = MF_R(1.0); }
+        if (mf_leadr_map_from_heights(&m, hm, 4, 4, MF_R(0.1), MF_R(0.1)) == MF_SUCCESS) {
+            s += mf_leadr_map_lookup(&m, MF_R(0.3), MF_R(0.6), MF_R(0.1)).E_xx + (mf_real)mf_leadr_map_memory_bytes(&m);
+            mf_leadr_map_release(&m);
+        }
+        if (mf_leadr_map_from_normals(&m, nm, 4, 4, MF_R(0.1), MF_R(0.1)) == MF_SUCCESS) mf_leadr_map_release(&m);
+    }
+    { /* LTC fitting and tables */
+        mf_ltc_fit_result r;
+        mf_ltc_table tb;
+        int nt = 0, na = 0;
+        if (mf_ltc_fit((const mf_ndf *)0, mft_brdf_cos, (void *)0, MF_R(0.7), (const mf_real *)0, &r) == MF_SUCCESS) s += r.albedo;
+        if (mf_ltc_table_build(&tb, MF_NDF_GGX, MF_R(2.0), 2, 2, (mf_progress_fn)0, (void *)0) == MF_SUCCESS) {
+            s += mf_ltc_table_lookup(&tb, MF_R(0.5), MF_R(0.3), (mf_real *)0, (mf_real *)0).M[0];
+            mf_ltc_table_release(&tb);
+        }
+        s += mf_ltc_ggx(MF_R(0.5), MF_R(0.3)).M[0] + mf_ltc_ggx_albedo(MF_R(0.5), MF_R(0.3));
+        s += mf_ltc_ggx_fresnel(MF_R(0.5), MF_R(0.3)) + (mf_real)mf_ltc_ggx_table(&nt, &na)[0] + (mf_real)(nt + na);
     }
     mf_frame(wo, &t, &b);
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();

@@ -1,9 +1,15 @@
 #!/bin/sh
 # The header compiles without a warning (-Werror) as C99, C11 and C++98..20,
 # float and double, with gcc/g++ and (when present) clang/clang++, and in two
-# translation units linked together.
+# translation units linked together; warn_check.c names every public function.
 CC=$1; CXX=$2; HAVE_CLANG=$3; WARN=$4; B=$5
 set -e
+# every public function of the header (inline, cold or in the implementation)
+# must be named in tests/warn_check.c, so each one is compiled and instantiated
+missing=$(grep -oE '^(MF_INLINE|MF_COLD|MFDEF) [^(]*[ *]mf_[a-z][A-Za-z0-9_]*\(' microfacet.h |
+          sed -E 's/.*[ *](mf_[A-Za-z0-9_]*)\($/\1/' | sort -u |
+          while read -r f; do grep -q "\b$f\b" tests/warn_check.c || printf '%s ' "$f"; done)
+if [ -n "$missing" ]; then echo "warnings: tests/warn_check.c does not name: $missing"; exit 1; fi
 run() { "$@" || { echo "warnings: failed: $*"; exit 1; }; }
 for prec in "" "-DMF_USE_DOUBLE"; do
   for std in c99 c11; do
