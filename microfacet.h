@@ -464,7 +464,7 @@ typedef struct mf_ndf_student_t {
 /* A tabulated (piecewise-linear) distribution: the arrays of one built NDF, all
  * in one allocation (block, bytes) owned until mf_tabulated_release. Fields are
  * filled by the builders; read them, do not write them. For CUDA, copy block to
- * the device and use mf_tabulated_rebase (section 14) to point a copy of the
+ * the device and use mf_tabulated_rebase (below) to point a copy of the
  * struct at it; pass that struct by value to the kernel and take its address. */
 typedef struct mf_tabulated {
     int n;              /* control points, theta[0] = 0 < ... < theta[n-1] = pi/2 */
@@ -1220,7 +1220,7 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
  * kind d stretched by (ax, ay) (GTR: 1, 1; Student-t: its roughness). */
 MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2);
 /* ======================================================================== */
-/* == 6. Linearly transformed microsurfaces                                 */
+/* == 8. Linearly transformed microsurfaces                                 */
 /* ======================================================================== */
 /* Atanasov et al. 2022 (thesis ch. 4): the microsurface is transformed by a
  * tangential matrix M (Eq. 4.1: M acts on the xy plane, z is kept). Normals
@@ -1379,7 +1379,7 @@ MF_INLINE mf_mat2 mf_jacobian_2d(mf_map2_fn map, void *ctx, mf_real u, mf_real v
                         (a[1] - b[1]) / (MF_R(2.0) * h), (c[1] - e[1]) / (MF_R(2.0) * h));
 }
 /* ======================================================================== */
-/* == 7. Smith masking                                                      */
+/* == 9. Smith masking                                                      */
 /* ======================================================================== */
 /* Smith: G1(w, m) = chi+(w.m) / (1 + Lambda(w)) (thesis Eq. 3.8 with the
  * average visibility S = 1 / (1 + Lambda)), which satisfies the masking
@@ -1468,7 +1468,7 @@ MF_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
     return c * mf_D(d, wm) / mf_projected_area(d, w);
 }
 /* ======================================================================== */
-/* == 8. Sampling                                                           */
+/* == 10. Sampling                                                          */
 /* ======================================================================== */
 /* mf_sample_D draws wm with density D(wm) wm.z (Walter et al. 2007): the
  * radius of the slope from the inverse CDF, the azimuth uniform, stretched by
@@ -1511,7 +1511,7 @@ MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_r
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
 /* ======================================================================== */
-/* == 9. Specular microfacet BRDF                                           */
+/* == 11. Specular microfacet BRDF                                          */
 /* ======================================================================== */
 /* f(wo, wi) = D(wh) G2(wo, wi, wh) / (4 |wo.z| |wi.z|) (Walter et al. 2007
  * Eq. 20 without Fresnel), sampled through the visible normals of wo
@@ -1571,7 +1571,7 @@ MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 }
 #ifndef MF_NO_LEADR
 /* ======================================================================== */
-/* == 10. LEADR slope moments                                               */
+/* == 12. LEADR slope moments                                               */
 /* ======================================================================== */
 /* Dupuy, Heitz et al. 2013 (LEADR mapping). A surface patch is summarized by
  * the first and second moments of its slopes (Eq. 9), which filter linearly
@@ -1850,7 +1850,7 @@ MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf
 /* A mip pyramid of moments over a periodic (tiling) texture. Level 0 holds
  * width x height texels; each next level halves both sizes (down to 1) and
  * holds exactly the mean of its 2x2 children. Sizes must be powers of two.
- * Built by mf_leadr_map_from_heights / mf_leadr_map_from_normals (section 14). */
+ * Built by mf_leadr_map_from_heights / mf_leadr_map_from_normals (implementation section). */
 typedef struct mf_leadr_map {
     int width, height, levels;
     mf_leadr *texels;      /* all levels, level 0 first, rows top to bottom */
@@ -1911,7 +1911,7 @@ MFDEF void mf_leadr_map_release(mf_leadr_map *m);
 MFDEF size_t mf_leadr_map_memory_bytes(const mf_leadr_map *m);
 #endif /* MF_NO_LEADR */
 /* ======================================================================== */
-/* == 11. Linearly Transformed Cosines                                      */
+/* == 13. Linearly Transformed Cosines                                      */
 /* ======================================================================== */
 /* Heitz, Dupuy, Hill, Neubelt 2016; Tao et al. 2021 Eq. 1: a clamped cosine
  * D_o(w) = max(0, w.z)/pi transformed by a 3x3 matrix M,
@@ -1921,7 +1921,7 @@ MFDEF size_t mf_leadr_map_memory_bytes(const mf_leadr_map *m);
  * exactly at the horizon. Polygons are given by their vertices relative to the
  * shading point (any length); the front face is the one whose vertices run
  * counterclockwise seen from the shading point. The fitter, the tables and the
- * built-in GGX table are non-inline (section 14, MICROFACET_IMPLEMENTATION). */
+ * built-in GGX table are non-inline (implementation section). */
 
 typedef struct mf_ltc {
     mf_real M[9];       /* row-major */
@@ -2211,7 +2211,7 @@ MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
  * mf_ltc_ggx_fresnel and mf_ltc_ggx_table (13_ltc.h). */
 #ifndef MF_NO_IBM
 /* ======================================================================== */
-/* == 12. Inverse Bin Map                                                   */
+/* == 15. Inverse Bin Map                                                   */
 /* ======================================================================== */
 /* Atanasov et al. 2021 (thesis ch. 5): the filtered BRDF of a normal map over a
  * pixel footprint A (Eq. 5.1-5.3) grouped by directional bins (binned BRDF,
@@ -2463,14 +2463,14 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
 /* ======================================================================== */
-/* == 13. Microsurface generation and a virtual gonioreflectometer          */
+/* == 16. Microsurface generation and a virtual gonioreflectometer          */
 /* ======================================================================== */
 /* Ribardiere, Bringier, Meneveaux, Simonot 2019, "Microfacet BSDFs Generated
  * from NDFs and Explicit Microgeometry", Sec. 2 and 4: periodic height fields
  * whose normals follow any mf_ndf (Algorithm 1: slopes Q_m sampled from D,
  * Schwarz error Eq. 19, least-squares integration Eq. 20-21 with the discrete
  * derivatives of Eq. 22, re-matching), and a virtual gonioreflectometer that
- * traces them. Everything is built and run in section 14 (no inline part). */
+ * traces them. Everything is in the implementation section (no inline part). */
 
 /* ---- Microsurface generation and the virtual gonioreflectometer ---- */
 /* mf_microsurface_generate (Ribardiere et al. 2019, Algorithm 1): a periodic

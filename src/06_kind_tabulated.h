@@ -10,7 +10,7 @@
 /* A tabulated (piecewise-linear) distribution: the arrays of one built NDF, all
  * in one allocation (block, bytes) owned until mf_tabulated_release. Fields are
  * filled by the builders; read them, do not write them. For CUDA, copy block to
- * the device and use mf_tabulated_rebase (section 14) to point a copy of the
+ * the device and use mf_tabulated_rebase (below) to point a copy of the
  * struct at it; pass that struct by value to the kernel and take its address. */
 typedef struct mf_tabulated {
     int n;              /* control points, theta[0] = 0 < ... < theta[n-1] = pi/2 */

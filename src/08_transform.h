@@ -1,6 +1,6 @@
 /* @api */
 /* ======================================================================== */
-/* == 6. Linearly transformed microsurfaces                                 */
+/* == 8. Linearly transformed microsurfaces                                 */
 /* ======================================================================== */
 /* Atanasov et al. 2022 (thesis ch. 4): the microsurface is transformed by a
  * tangential matrix M (Eq. 4.1: M acts on the xy plane, z is kept). Normals

@@ -1,6 +1,6 @@
 /* @api */
 /* ======================================================================== */
-/* == 7. Smith masking                                                      */
+/* == 9. Smith masking                                                      */
 /* ======================================================================== */
 /* Smith: G1(w, m) = chi+(w.m) / (1 + Lambda(w)) (thesis Eq. 3.8 with the
  * average visibility S = 1 / (1 + Lambda)), which satisfies the masking

@@ -1,6 +1,6 @@
 /* @api */
 /* ======================================================================== */
-/* == 8. Sampling                                                           */
+/* == 10. Sampling                                                          */
 /* ======================================================================== */
 /* mf_sample_D draws wm with density D(wm) wm.z (Walter et al. 2007): the
  * radius of the slope from the inverse CDF, the azimuth uniform, stretched by

@@ -1,6 +1,6 @@
 /* @api */
 /* ======================================================================== */
-/* == 9. Specular microfacet BRDF                                           */
+/* == 11. Specular microfacet BRDF                                          */
 /* ======================================================================== */
 /* f(wo, wi) = D(wh) G2(wo, wi, wh) / (4 |wo.z| |wi.z|) (Walter et al. 2007
  * Eq. 20 without Fresnel), sampled through the visible normals of wo

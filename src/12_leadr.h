@@ -1,7 +1,7 @@
 /* @optional MF_NO_LEADR */
 /* @api */
 /* ======================================================================== */
-/* == 10. LEADR slope moments                                               */
+/* == 12. LEADR slope moments                                               */
 /* ======================================================================== */
 /* Dupuy, Heitz et al. 2013 (LEADR mapping). A surface patch is summarized by
  * the first and second moments of its slopes (Eq. 9), which filter linearly
@@ -280,7 +280,7 @@ MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf
 /* A mip pyramid of moments over a periodic (tiling) texture. Level 0 holds
  * width x height texels; each next level halves both sizes (down to 1) and
  * holds exactly the mean of its 2x2 children. Sizes must be powers of two.
- * Built by mf_leadr_map_from_heights / mf_leadr_map_from_normals (section 14). */
+ * Built by mf_leadr_map_from_heights / mf_leadr_map_from_normals (implementation section). */
 typedef struct mf_leadr_map {
     int width, height, levels;
     mf_leadr *texels;      /* all levels, level 0 first, rows top to bottom */

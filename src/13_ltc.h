@@ -1,6 +1,6 @@
 /* @api */
 /* ======================================================================== */
-/* == 11. Linearly Transformed Cosines                                      */
+/* == 13. Linearly Transformed Cosines                                      */
 /* ======================================================================== */
 /* Heitz, Dupuy, Hill, Neubelt 2016; Tao et al. 2021 Eq. 1: a clamped cosine
  * D_o(w) = max(0, w.z)/pi transformed by a 3x3 matrix M,
@@ -10,7 +10,7 @@
  * exactly at the horizon. Polygons are given by their vertices relative to the
  * shading point (any length); the front face is the one whose vertices run
  * counterclockwise seen from the shading point. The fitter, the tables and the
- * built-in GGX table are non-inline (section 14, MICROFACET_IMPLEMENTATION). */
+ * built-in GGX table are non-inline (implementation section). */
 
 typedef struct mf_ltc {
     mf_real M[9];       /* row-major */

@@ -1,7 +1,7 @@
 /* @optional MF_NO_IBM */
 /* @api */
 /* ======================================================================== */
-/* == 12. Inverse Bin Map                                                   */
+/* == 15. Inverse Bin Map                                                   */
 /* ======================================================================== */
 /* Atanasov et al. 2021 (thesis ch. 5): the filtered BRDF of a normal map over a
  * pixel footprint A (Eq. 5.1-5.3) grouped by directional bins (binned BRDF,

@@ -1,14 +1,14 @@
 /* @optional MF_NO_MICROSURFACE */
 /* @api */
 /* ======================================================================== */
-/* == 13. Microsurface generation and a virtual gonioreflectometer          */
+/* == 16. Microsurface generation and a virtual gonioreflectometer          */
 /* ======================================================================== */
 /* Ribardiere, Bringier, Meneveaux, Simonot 2019, "Microfacet BSDFs Generated
  * from NDFs and Explicit Microgeometry", Sec. 2 and 4: periodic height fields
  * whose normals follow any mf_ndf (Algorithm 1: slopes Q_m sampled from D,
  * Schwarz error Eq. 19, least-squares integration Eq. 20-21 with the discrete
  * derivatives of Eq. 22, re-matching), and a virtual gonioreflectometer that
- * traces them. Everything is built and run in section 14 (no inline part). */
+ * traces them. Everything is in the implementation section (no inline part). */
 
 /* ---- Microsurface generation and the virtual gonioreflectometer ---- */
 /* mf_microsurface_generate (Ribardiere et al. 2019, Algorithm 1): a periodic
