@@ -14,8 +14,8 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 
-.PHONY: all test test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check config-check ltc-table
+.PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
+        header header-check config-check ltc-table $(foreach s,header warnings config quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
 
@@ -42,51 +42,132 @@ ltc-table: | $(BUILD)
 $(BUILD):
 	@mkdir -p $(BUILD)
 
-# ---- test binaries: {C, C++} x {float, double}; ref_other.c is the same math
-# ---- in the other precision (always C), for the float-vs-double comparison
+# ---- make uses every core unless told otherwise (make -j1 ... runs serially)
+ifeq ($(MAKELEVEL),0)
+NPROC   := $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+MAKEFLAGS += -j$(NPROC)
+endif
+# V=1 prints the full compiler commands
+ifeq ($(V),1)
+Q :=
+else
+Q := @
+endif
+
+# ---- test binaries: {C, C++} x {float, double}, one object per test source so
+# ---- that make -j compiles in parallel and rebuilds only what changed;
+# ---- ref_other.c is the same math in the other precision (always C), for the
+# ---- float-vs-double comparison
+TEST_CFGS := c_double c_float cpp_double cpp_float
+CMD_c_double   := $(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float
+CMD_c_float    := $(CC) -std=c99 $(OPT) $(TWARN) -DMFT_OTHER=double
+CMD_cpp_double := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float
+CMD_cpp_float  := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) -DMFT_OTHER=double
+LINK_c_double := $(CC)
+LINK_c_float := $(CC)
+LINK_cpp_double := $(CXX)
+LINK_cpp_float := $(CXX)
+REF_c_double := ref_float
+REF_c_float := ref_double
+REF_cpp_double := ref_float
+REF_cpp_float := ref_double
+TEST_HDRS := microfacet.h tests/mf_test.h tests/quad.h tests/ref_other.h
+
 $(BUILD)/ref_float.o: tests/ref_other.c microfacet.h | $(BUILD)
-	$(CC) -std=c99 $(OPT) $(TWARN) -I. -c $< -o $@
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) -I. -c $< -o $@
 $(BUILD)/ref_double.o: tests/ref_other.c microfacet.h | $(BUILD)
-	$(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -I. -c $< -o $@
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -I. -c $< -o $@
 
-$(BUILD)/test_c_double: $(TEST_SRC) $(BUILD)/ref_float.o microfacet.h tests/mf_test.h | $(BUILD)
-	$(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float -I. -Itests $(TEST_SRC) $(BUILD)/ref_float.o -o $@ -lm
-$(BUILD)/test_c_float: $(TEST_SRC) $(BUILD)/ref_double.o microfacet.h tests/mf_test.h | $(BUILD)
-	$(CC) -std=c99 $(OPT) $(TWARN) -DMFT_OTHER=double -I. -Itests $(TEST_SRC) $(BUILD)/ref_double.o -o $@ -lm
-$(BUILD)/test_cpp_double: $(TEST_SRC) $(BUILD)/ref_float.o microfacet.h tests/mf_test.h | $(BUILD)
-	$(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float -I. -Itests $(TEST_SRC) -x none $(BUILD)/ref_float.o -o $@ -lm
-$(BUILD)/test_cpp_float: $(TEST_SRC) $(BUILD)/ref_double.o microfacet.h tests/mf_test.h | $(BUILD)
-	$(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) -DMFT_OTHER=double -I. -Itests $(TEST_SRC) -x none $(BUILD)/ref_double.o -o $@ -lm
+define TEST_BUILD
+$(BUILD)/$(1)/%.o: tests/%.c $(TEST_HDRS)
+	@mkdir -p $(BUILD)/$(1)
+	@echo "  CC      $$@"
+	$(Q)$(CMD_$(1)) -I. -Itests -c $$< -o $$@
+$(BUILD)/test_$(1): $(patsubst tests/%.c,$(BUILD)/$(1)/%.o,$(TEST_SRC)) $(BUILD)/$(REF_$(1)).o
+	@echo "  LINK    $$@"
+	$(Q)$(LINK_$(1)) $$^ -o $$@ -lm
+endef
+$(foreach c,$(TEST_CFGS),$(eval $(call TEST_BUILD,$(c))))
 
-TEST_BINS := $(BUILD)/test_c_double $(BUILD)/test_c_float $(BUILD)/test_cpp_double $(BUILD)/test_cpp_float
+TEST_BINS := $(TEST_CFGS:%=$(BUILD)/test_%)
+
+# ---- make test: every step streams its output with [step] in front of each
+# ---- line; steps run in parallel; the last line is the total
+# ---- "N passed, N failed" and the exit status is non-zero on any failure.
+# The C builds run every module; the C++ builds compile every test source and
+# run a representative subset (make test-cpp runs them whole).
+RES := $(BUILD)/results
+CPP_MODULES ?= test_core test_leadr test_tabulated test_ibm test_robust test_float test_tu2
+QUICK_MODULES := test_core test_leadr test_tabulated test_ibm test_robust test_float test_tu2
+MODULES_c_double :=
+MODULES_c_float :=
+MODULES_cpp_double = $(CPP_MODULES)
+MODULES_cpp_float = $(CPP_MODULES)
+RUN_STEP := sh tests/run_step.sh
+SUM := sh tests/sum_results.sh $(RES)
+TEST_STEPS := header c_double c_float warnings config cpp_double cpp_float
+
+$(RES):
+	@mkdir -p $(RES)
+step-header: | $(RES)
+	@$(RUN_STEP) header $(RES)/header check $(MAKE) --no-print-directory header-check
+step-warnings: | $(RES)
+	@$(RUN_STEP) warnings $(RES)/warnings check sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
+step-config: | $(RES)
+	@$(RUN_STEP) config $(RES)/config check sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
+# (phony targets take no pattern rules: one explicit rule per configuration)
+define TEST_RUN
+step-$(1): $(BUILD)/test_$(1) | $(RES)
+	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(MODULES_$(1))
+endef
+$(foreach c,$(TEST_CFGS),$(eval $(call TEST_RUN,$(c))))
+step-quick: $(BUILD)/test_c_float | $(RES)
+	@$(RUN_STEP) quick $(RES)/quick tests ./$< $(QUICK_MODULES)
+
+test: $(TEST_STEPS:%=step-%)
+	@$(SUM) $(TEST_STEPS)
+# smoke test, under 30 s: the header is current, one build, the quick modules
+check: step-header step-quick
+	@$(SUM) header quick
+test-c: step-c_double step-c_float
+	@$(SUM) c_double c_float
+test-cpp: CPP_MODULES :=
+test-cpp: step-cpp_double step-cpp_float
+	@$(SUM) cpp_double cpp_float
+test-double: CPP_MODULES :=
+test-double: step-c_double step-cpp_double
+	@$(SUM) c_double cpp_double
+test-float: CPP_MODULES :=
+test-float: step-c_float step-cpp_float
+	@$(SUM) c_float cpp_float
 
 # warnings: the header alone must compile cleanly as C99/C11 and C++98..20,
 # float and double, gcc and clang (when present), with -Werror.
 warnings: | $(BUILD)
 	@sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
 
-# make test: every check above, then all four test binaries; the last line is
-# the total "N passed, N failed"; non-zero exit on any failure.
-test: $(TEST_BINS)
-	@sh tests/run_all.sh "$(MAKE)" $(TEST_BINS)
-
-test-c: $(BUILD)/test_c_double $(BUILD)/test_c_float
-	@sh tests/run_all.sh "" $^
-test-cpp: $(BUILD)/test_cpp_double $(BUILD)/test_cpp_float
-	@sh tests/run_all.sh "" $^
-test-double: $(BUILD)/test_c_double $(BUILD)/test_cpp_double
-	@sh tests/run_all.sh "" $^
-test-float: $(BUILD)/test_c_float $(BUILD)/test_cpp_float
-	@sh tests/run_all.sh "" $^
-
 # ASan + UBSan, double and float
 SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
-asan: | $(BUILD)
-	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -I. -c tests/ref_other.c -o $(BUILD)/asan_ref_f.o
-	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -I. -c tests/ref_other.c -o $(BUILD)/asan_ref_d.o
-	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_f.o -o $(BUILD)/asan_double -lm
-	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMFT_OTHER=double -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_d.o -o $(BUILD)/asan_float -lm
-	@sh tests/run_all.sh "" $(BUILD)/asan_double $(BUILD)/asan_float
+$(BUILD)/asan_ref_f.o: tests/ref_other.c microfacet.h | $(BUILD)
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O1 $(SAN) $(TWARN) -I. -c $< -o $@
+$(BUILD)/asan_ref_d.o: tests/ref_other.c microfacet.h | $(BUILD)
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -I. -c $< -o $@
+$(BUILD)/asan_double: $(TEST_SRC) $(TEST_HDRS) $(BUILD)/asan_ref_f.o
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_f.o -o $@ -lm
+$(BUILD)/asan_float: $(TEST_SRC) $(TEST_HDRS) $(BUILD)/asan_ref_d.o
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMFT_OTHER=double -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_d.o -o $@ -lm
+step-asan_double: $(BUILD)/asan_double | $(RES)
+	@$(RUN_STEP) asan_double $(RES)/asan_double tests ./$<
+step-asan_float: $(BUILD)/asan_float | $(RES)
+	@$(RUN_STEP) asan_float $(RES)/asan_float tests ./$<
+asan: step-asan_double step-asan_float
+	@$(SUM) asan_double asan_float
 
 bench: | $(BUILD)
 	$(CC) -std=c99 -O2 $(WARN) -DMF_BENCH_FLAGS="\"-std=c99 -O2\"" -I. bench/bench.c -o $(BUILD)/bench -lm

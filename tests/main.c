@@ -2,6 +2,7 @@
 #define MICROFACET_IMPLEMENTATION
 #include "mf_test.h"
 #include <stdlib.h>
+#include <time.h>
 
 int mft_passed = 0, mft_failed = 0, mft_verbose = 0;
 
@@ -130,14 +131,42 @@ mf_ndf mft_make(const mft_case *c)
 
 void mft_tu_values_main(double *out) { mft_tu_values(out); }
 
+/* Modules named on the command line run (all when none is named); -v prints
+ * every check. Each module says when it starts, so its information lines sit
+ * under its own name, and ends with its count and CPU time. */
+static int mft_argc;
+static char **mft_argv;
+static int mft_selected(const char *name)
+{
+    int i, any = 0;
+    for (i = 1; i < mft_argc; ++i) {
+        if (!strcmp(mft_argv[i], "-v")) continue;
+        any = 1;
+        if (!strcmp(mft_argv[i], name)) return 1;
+    }
+    return !any;
+}
+
+static void mft_run(const char *name, void (*fn)(void))
+{
+    int f0 = mft_failed, p0 = mft_passed;
+    clock_t t0;
+    if (!mft_selected(name)) return;
+    printf("  %s ...\n", name);
+    t0 = clock();
+    fn();
+    printf("  %-17s %d passed, %d failed  (%.1f s)\n", name, mft_passed - p0, mft_failed - f0,
+           (double)(clock() - t0) / CLOCKS_PER_SEC);
+}
+
 int main(int argc, char **argv)
 {
     int i;
-    const char *only = NULL;
-    for (i = 1; i < argc; ++i) {
+    mft_argc = argc;
+    mft_argv = argv;
+    for (i = 1; i < argc; ++i)
         if (!strcmp(argv[i], "-v")) mft_verbose = 1;
-        else only = argv[i];
-    }
+    setvbuf(stdout, NULL, _IOLBF, 0); /* stream progress through a pipe */
     printf("microfacet.h tests, mf_real = %s, %s\n", MFT_REAL_NAME,
 #ifdef __cplusplus
            "C++"
@@ -145,8 +174,7 @@ int main(int argc, char **argv)
            "C"
 #endif
     );
-#define MFT_RUN(name) do { if (!only || !strcmp(only, #name)) { int f0 = mft_failed, p0 = mft_passed; name(); \
-    printf("  %-14s %d passed, %d failed\n", #name, mft_passed - p0, mft_failed - f0); fflush(stdout); } } while (0)
+#define MFT_RUN(name) mft_run(#name, name)
     MFT_RUN(test_core);
     MFT_RUN(test_ndf);
     MFT_RUN(test_sampling);
