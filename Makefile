@@ -15,7 +15,7 @@ HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check config-check ltc-table $(foreach s,header warnings config quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
+        header header-check config-check package-check ltc-table $(foreach s,header warnings config package quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
 
@@ -107,7 +107,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header c_double c_float warnings config cpp_double cpp_float
+TEST_STEPS := header c_double c_float warnings config package cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -115,6 +115,8 @@ step-header: | $(RES)
 	@$(RUN_STEP) header $(RES)/header check $(MAKE) --no-print-directory header-check
 step-warnings: | $(RES)
 	@$(RUN_STEP) warnings $(RES)/warnings check sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
+step-package: | $(RES)
+	@$(RUN_STEP) package $(RES)/package check sh tests/package_check.sh "$(CC)" $(BUILD)
 step-config: | $(RES)
 	@$(RUN_STEP) config $(RES)/config check sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 # (phony targets take no pattern rules: one explicit rule per configuration)
@@ -194,9 +196,21 @@ else
 	@echo "cuda-check: nvcc not found, skipped"
 endif
 
+# make install: the header, LICENSE and the pkg-config file (the CMake package
+# comes with cmake --install, see CMakeLists.txt)
+VERSION := $(shell sed -n 's/^\#define MF_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)$$/\2/p' microfacet.h | paste -sd. -)
 install:
-	install -d $(DESTDIR)$(PREFIX)/include
+	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/share/licenses/microfacet $(DESTDIR)$(PREFIX)/share/pkgconfig
 	install -m 644 microfacet.h $(DESTDIR)$(PREFIX)/include/microfacet.h
+	install -m 644 LICENSE $(DESTDIR)$(PREFIX)/share/licenses/microfacet/LICENSE
+	sed -e 's|@MF_PC_VERSION@|$(VERSION)|' -e 's|@MF_PC_INCLUDEDIR@|include|' cmake/microfacet.pc.in > $(DESTDIR)$(PREFIX)/share/pkgconfig/microfacet.pc
+	chmod 644 $(DESTDIR)$(PREFIX)/share/pkgconfig/microfacet.pc
+
+# packaging check (make test runs it when cmake is present): CMake package
+# through find_package, add_subdirectory and FetchContent; pkg-config after
+# cmake --install and after make install
+package-check: | $(BUILD)
+	@sh tests/package_check.sh "$(CC)" $(BUILD)
 
 clean:
 	rm -rf $(BUILD) out
