@@ -18,10 +18,12 @@
  * last one is a two-lobe tabulated distribution (mf_tabulated_build).
  * Prints, per distribution, the Schwarz statistics, the first-bounce energy
  * (measured and model), the energy of the longer paths and the relative L1
- * distance of the lobes.
+ * distance of the lobes. Writes base.png (panels and rows labelled, a colour
+ * bar per row for the lobes), base.pfm (the same display values, linear) and,
+ * built with OpenEXR, base.exr.
  *
  *   cc -O2 -I. examples/microsurface.c -o microsurface -lm   (from the repo root)
- *   ./microsurface [out.ppm] [out.pfm]                       (microsurface.ppm, .pfm)
+ *   ./microsurface [base]                                    (default: microsurface)
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
@@ -47,15 +49,12 @@ static void put(float *img, int x, int y, float r, float g, float b)
     img[3 * (y * W + x)] = r; img[3 * (y * W + x) + 1] = g; img[3 * (y * W + x) + 2] = b;
 }
 
-/* false color: black - blue - cyan - yellow - white for t in [0, 1] */
+/* false colour for t in [0, 1]: the examples' colour map */
 static void ramp(float t, float *c)
 {
-    if (t < 0.0f) t = 0.0f;
-    if (t > 1.0f) t = 1.0f;
-    if (t < 0.25f) { c[0] = 0.0f; c[1] = 0.0f; c[2] = 4.0f * t; }
-    else if (t < 0.5f) { c[0] = 0.0f; c[1] = 4.0f * (t - 0.25f); c[2] = 1.0f; }
-    else if (t < 0.75f) { c[0] = 4.0f * (t - 0.5f); c[1] = 1.0f; c[2] = 1.0f - 4.0f * (t - 0.5f); }
-    else { c[0] = 1.0f; c[1] = 1.0f; c[2] = 4.0f * (t - 0.75f); }
+    unsigned char b[3];
+    ex_colormap_rgb((double)t, b);
+    c[0] = b[0] / 255.0f; c[1] = b[1] / 255.0f; c[2] = b[2] / 255.0f;
 }
 
 /* a polar map of per-cell values (divided by the cell solid angle) */
@@ -77,9 +76,11 @@ static void polar(float *img, int x0, int y0, const mf_gonio *g, const mf_real *
 
 int main(int argc, char **argv)
 {
-    const char *ppm = argc > 1 ? argv[1] : "microsurface.ppm", *pfm = argc > 2 ? argv[2] : "microsurface.pfm";
+    const char *base = argc > 1 ? argv[1] : "microsurface";
     entry list[8];   /* room for two more */
+    double row_vmax[8];
     int n = 0, e, H, status = 0;
+    ex_image im;
     float *img;
     mf_real *h = (mf_real *)malloc(sizeof(mf_real) * SIZE * SIZE), *model;
     mf_gonio g;
@@ -108,8 +109,8 @@ int main(int argc, char **argv)
     }
 
     H = n * P + (n - 1) * GAP;
-    img = (float *)calloc((size_t)(3 * W * H), sizeof(float));
-    if (!h || !img || mf_gonio_init(&g, RINGS) != MF_SUCCESS) { fprintf(stderr, "out of memory\n"); return 1; }
+    if (!h || ex_image_init(&im, W, H) || mf_gonio_init(&g, RINGS) != MF_SUCCESS) { fprintf(stderr, "out of memory\n"); return 1; }
+    img = im.lin;
     model = (mf_real *)malloc(sizeof(mf_real) * (size_t)g.cells);
     mf_gonio_config_default(&cfg);
     cfg.wi = wi; cfg.rays = RAYS;
@@ -132,6 +133,7 @@ int main(int argc, char **argv)
             sm += (double)model[c];
             if ((double)model[c] / om > vmax) vmax = (double)model[c] / om;
         }
+        row_vmax[e] = vmax;
         printf("%-38s below %.2f  first bounce %.4f (model %.4f)  longer paths %.4f  lobe L1 %.3f  lost %d\n",
                list[e].name, (double)st.below, (double)g.energy_first, sm, (double)g.energy_multi, l1 / sm, g.lost);
         /* 1. heights */
@@ -170,10 +172,22 @@ int main(int argc, char **argv)
             }
         }
     }
-    if (write_images(ppm, pfm, img, W, H, 0)) status = 1;
-    else printf("wrote %s and %s (%d x %d)\n", ppm, pfm, W, H);
+    ex_direct(&im, 0, 0, W, H);
+    for (e = 0; e < n; ++e) {
+        int y0 = e * (P + GAP);
+        ex_text(&im, 6, y0 + 6, 1, list[e].name);
+        ex_text(&im, P + GAP + 6, y0 + 6, 1, "measured, first bounce");
+        ex_text(&im, 2 * (P + GAP) + 6, y0 + 6, 1, "Smith model");
+        ex_text(&im, 3 * (P + GAP) + 6, y0 + 6, 1, "slice phi = 0, pi: -90..90 deg");
+        ex_text(&im, 3 * (P + GAP) + 6, y0 + 18, 1, "red measured, green model");
+        ex_text(&im, 3 * (P + GAP) + 6, y0 + 30, 1, "white exact f cos");
+        ex_colorbar(&im, 2 * (P + GAP) + 8, y0 + P - 26, P - 16, 8,
+                    row_vmax[e], "f cos per sr");
+    }
+    ex_label(&im, 6, H - 14, 1, "theta_i = %g rad, light from the right", THETA_I);
+    if (ex_write(&im, base)) status = 1;
     mf_gonio_release(&g);
     mf_tabulated_release(&tab);
-    free(model); free(img); free(h);
+    free(model); ex_image_free(&im); free(h);
     return status;
 }

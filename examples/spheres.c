@@ -6,11 +6,13 @@
  * conductor Fresnel per RGB channel. 32 jittered samples per pixel; the sky
  * gets 32 of them on the GGX and Beckmann rows but only 8 on the GTR and
  * Student-t rows, whose exact VNDF samplers are far slower (about 10 s in all
- * on one core). Writes a tonemapped PPM and a linear PFM and prints the count
- * of non-finite samples (expected 0; the exit status is 1 otherwise).
+ * on one core). Writes base.png (tone mapped, each sphere labelled with its
+ * distribution and alpha), base.pfm (linear) and, built with OpenEXR,
+ * base.exr, and prints the count of non-finite samples (expected 0; the exit
+ * status is 1 otherwise).
  *
  *   cc -O2 -I. examples/spheres.c -o spheres -lm      (from the repo root)
- *   ./spheres [out.ppm] [out.pfm]                     (spheres.ppm, spheres.pfm)
+ *   ./spheres [base]                                  (default: spheres)
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
@@ -97,13 +99,12 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
 
 int main(int argc, char **argv)
 {
-    const char *ppm_path = argc > 1 ? argv[1] : "spheres.ppm";
-    const char *pfm_path = argc > 2 ? argv[2] : "spheres.pfm";
+    const char *base = argc > 1 ? argv[1] : "spheres";
     const mf_real radius = MF_R(0.44) * CELL, bg = MF_R(0.04);
-    float *img = (float *)malloc(sizeof(float) * 3 * W * H);
+    ex_image im;
     long bad = 0;
-    int px, py, s, c;
-    if (!img) { fprintf(stderr, "out of memory\n"); return 1; }
+    int px, py, s, c, err;
+    if (ex_image_init(&im, W, H)) return 1;
 
     for (py = 0; py < H; ++py) {
         int row = py / CELL;
@@ -128,16 +129,21 @@ int main(int argc, char **argv)
                 if (!finite3(v)) { ++bad; continue; }   /* guard: never let NaN through */
                 for (c = 0; c < 3; ++c) sum[c] += v[c];
             }
-            for (c = 0; c < 3; ++c) img[3 * (py * W + px) + c] = (float)(sum[c] / (mf_real)SPP);
+            for (c = 0; c < 3; ++c) ex_px(&im, px, py)[c] = (float)(sum[c] / (mf_real)SPP);
         }
     }
 
-    if (write_images(ppm_path, pfm_path, img, W, H, W)) { free(img); return 1; }
-    free(img);
+    ex_tonemap_all(&im, 1.0);
+    for (py = 0; py < ROWS; ++py)
+        for (px = 0; px < COLS; ++px) {
+            ex_text(&im, px * CELL + 4, py * CELL + 4, 1, row_names[py]);
+            ex_label(&im, px * CELL + 4, py * CELL + CELL - 11, 1, "alpha %g", (double)alphas[px]);
+        }
+    err = ex_write(&im, base);
+    ex_image_free(&im);
 
     printf("rows: %s, %s, %s, %s; columns: alpha = 0.05 0.15 0.3 0.5 0.8\n",
            row_names[0], row_names[1], row_names[2], row_names[3]);
     printf("non-finite samples: %ld\n", bad);
-    printf("wrote %s (tonemapped) and %s (linear)\n", ppm_path, pfm_path);
-    return bad != 0;
+    return bad != 0 || err;
 }

@@ -15,11 +15,12 @@
  * alpha is 0.05 rather than the thesis' 0.0121 so that the highlight covers
  * enough pixels at this resolution. A thin dark 10x10 grid marks texture space.
  * Exact conductor Fresnel per RGB channel; 4 jittered samples per pixel.
- * Writes a tonemapped PPM and a linear PFM and prints the count of non-finite
- * samples (expected 0; the exit status is 1 otherwise).
+ * Writes base.png (tone mapped, panels labelled), base.pfm (linear) and, built
+ * with OpenEXR, base.exr, and prints the count of non-finite samples
+ * (expected 0; the exit status is 1 otherwise).
  *
  *   cc -O2 -I. examples/transforms.c -o transforms -lm   (from the repo root)
- *   ./transforms [out.ppm] [out.pfm]                     (transforms.ppm, .pfm)
+ *   ./transforms [base]                                  (default: transforms)
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
@@ -111,8 +112,7 @@ static void shade(const mf_ndf *base, int p, mf_vec3 eye, mf_vec3 dir, mf_real o
 
 int main(int argc, char **argv)
 {
-    const char *ppm_path = argc > 1 ? argv[1] : "transforms.ppm";
-    const char *pfm_path = argc > 2 ? argv[2] : "transforms.pfm";
+    const char *base_path = argc > 1 ? argv[1] : "transforms";
     /* pinhole camera in front of the plate, looking down at its middle */
     const mf_vec3 eye = mf_vec3_make(MF_R(0.5), MF_R(-0.3), MF_R(1.6));
     const mf_vec3 fwd = mf_normalize(sub(mf_vec3_make(MF_R(0.5), MF_R(0.5), MF_R(0.0)), eye));
@@ -120,11 +120,11 @@ int main(int argc, char **argv)
     const mf_vec3 up = mf_cross(right, fwd);
     const mf_real tan_half = MF_R(0.34);
     const mf_ndf base = mf_gtr(ALPHA, GAMMA);
-    float *img = (float *)malloc(sizeof(float) * 3 * W * H);
+    ex_image im;
     mf_real jac_err = MF_R(0.0);
     long bad = 0;
-    int px, py, s, c;
-    if (!img) { fprintf(stderr, "out of memory\n"); return 1; }
+    int px, py, s, c, err;
+    if (ex_image_init(&im, W, H)) return 1;
 
     for (py = 0; py < H; ++py) {
         for (px = 0; px < W; ++px) {
@@ -142,17 +142,20 @@ int main(int argc, char **argv)
                 if (!finite3(v)) { ++bad; continue; }   /* guard: never let NaN through */
                 for (c = 0; c < 3; ++c) sum[c] += v[c];
             }
-            for (c = 0; c < 3; ++c) img[3 * (py * W + px) + c] = (float)(sum[c] / (mf_real)SPP);
+            for (c = 0; c < 3; ++c) ex_px(&im, px, py)[c] = (float)(sum[c] / (mf_real)SPP);
         }
     }
 
-    if (write_images(ppm_path, pfm_path, img, W, H, W)) { free(img); return 1; }
-    free(img);
+    ex_tonemap_all(&im, 1.0);
+    for (px = 0; px < PANELS; ++px)
+        ex_label(&im, px * CELL + 8, 8, 2, "%d. %s", px + 1, panel_names[px]);
+    ex_label(&im, 6, H - 13, 1, "GTR gamma %g, alpha %g", (double)GAMMA, (double)ALPHA);
+    err = ex_write(&im, base_path);
+    ex_image_free(&im);
 
     printf("panels, left to right: 1. %s, 2. %s, 3. %s, 4. %s\n",
            panel_names[0], panel_names[1], panel_names[2], panel_names[3]);
     printf("max |mf_jacobian_2d - exact Jacobian| (sum of entries): %.2g\n", (double)jac_err);
     printf("non-finite samples: %ld\n", bad);
-    printf("wrote %s (tonemapped) and %s (linear)\n", ppm_path, pfm_path);
-    return bad != 0;
+    return bad != 0 || err;
 }
