@@ -13,6 +13,18 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
             tests/test_robust.c tests/test_float.c tests/test_tu2.c
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
+# OpenEXR is optional (apt-get install libopenexr-dev): found through
+# pkg-config, examples then also write .exr and make test reads EXR inputs;
+# make EXR=no ignores it
+ifneq ($(EXR),no)
+HAVE_EXR   := $(shell pkg-config --exists OpenEXR 2>/dev/null && echo yes)
+endif
+ifeq ($(HAVE_EXR),yes)
+EXR_CFLAGS := $(shell pkg-config --cflags OpenEXR)
+EXR_LIBS   := $(shell pkg-config --libs OpenEXR)
+EXR_DEFS   := -DMF_EXAMPLE_EXR $(EXR_CFLAGS)
+EXR_HDR    := tools/exr_io.h
+endif
 
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
         header header-check config-check package-check ltc-table $(foreach s,header warnings config package quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
@@ -177,14 +189,21 @@ bench: | $(BUILD)
 	./$(BUILD)/bench
 	./$(BUILD)/bench_double
 
+# ---- make demo: each example is rebuilt only when its source or the header
+# ---- changed and rerun only when rebuilt; its output is printed with
+# ---- [example] in front, and the list of images written ends the target.
 EXAMPLES := $(basename $(notdir $(wildcard examples/*.c)))
-demo: | $(BUILD)
+$(BUILD)/ex_%: examples/%.c examples/example_common.h microfacet.h $(EXR_HDR) | $(BUILD)
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O2 $(WARN) $(EXR_DEFS) -I. $< -o $@ $(EXR_LIBS) -lm
+out/%.png: $(BUILD)/ex_%
 	@mkdir -p out
-	@for e in $(EXAMPLES); do \
-	  $(CC) -std=c99 -O2 $(WARN) -I. examples/$$e.c -o $(BUILD)/$$e -lm || exit 1; \
-	  ./$(BUILD)/$$e out/$$e.ppm out/$$e.pfm || exit 1; \
-	done
-	@echo "images written to out/"
+	@echo "  RUN     examples/$*.c"
+	@{ ./$< out/$* 2>&1; echo $$? > out/$*.rc; } | sed 's/^/[$*] /'; \
+	  rc=$$(cat out/$*.rc); rm -f out/$*.rc; [ "$$rc" -eq 0 ] || { rm -f $@; exit 1; }
+demo: $(EXAMPLES:%=out/%.png)
+	@echo "make demo: $(words $(EXAMPLES)) examples; images in out/$(if $(EXR_DEFS),, (no .exr: OpenEXR not found, or EXR=no))"
+	@cd out && ls -1 $(foreach e,$(EXAMPLES),$(e).png $(e).pfm $(if $(EXR_DEFS),$(e).exr)) | sed 's|^|  out/|'
 
 # CUDA: device code must compile (no GPU needed); optional.
 cuda-check: | $(BUILD)

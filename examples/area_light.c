@@ -7,18 +7,20 @@
  *   2. Monte Carlo: 256 stratified samples of the light's area plus 256
  *      visible-normal BRDF samples (mf_brdf_sample) per pixel, combined by
  *      multiple importance sampling (balance heuristic, mf_brdf_pdf);
- *   3. |LTC - MC| x 4, shown linear (white = a difference of 0.25).
+ *   3. |LTC - MC| (the channel mean) through a colour map, with its colour bar.
  * Neither column has shadows (LTC cannot), so both integrate the same thing.
  * Constant specular color 0.6 (no Fresnel), diffuse albedo about 0.3. Prints,
  * per row, the mean relative difference |LTC - MC| / MC over pixels whose MC
  * value is above 0.02, for the total and for the specular part alone (whose
  * energy-weighted sum |LTC - MC| / sum MC follows). The differences are the
- * LTC fit's: they barely move with 4x the samples. About 3 s on one core.
- * Writes a tonemapped PPM and a linear PFM and prints the count of non-finite
- * values (expected 0; the exit status is 1 otherwise).
+ * LTC fit's: they barely move with 4x the samples. About 10 s on one core.
+ * Writes base.png (tone mapped; rows, columns and each row's figures written
+ * on the image), base.pfm (linear; column 3 holds |LTC - MC| per channel) and,
+ * built with OpenEXR, base.exr, and prints the count of non-finite values
+ * (expected 0; the exit status is 1 otherwise).
  *
  *   cc -O2 -I. examples/area_light.c -o area_light -lm   (from the repo root)
- *   ./area_light [out.ppm] [out.pfm]                    (area_light.ppm, .pfm)
+ *   ./area_light [base]                                 (default: area_light)
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
@@ -29,8 +31,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define PW 200                   /* panel size */
-#define PH 150
+#define PW 360                   /* panel size */
+#define PH 270
 #define W (3 * PW)
 #define H (3 * PH)
 #define NLX 16                   /* light samples: NLX x NLY strata */
@@ -38,15 +40,17 @@
 #define NL (NLX * NLY)
 #define NBX 16                   /* BRDF samples: NBX x NBX strata */
 #define NB (NBX * NBX)
-#define LRAD MF_R(5.0)           /* light radiance */
+#define LRAD MF_R(8.0)           /* light radiance */
+#define DIFF_MAX 0.1             /* |LTC - MC| at the top of the colour map */
 #define KS MF_R(0.6)             /* specular color */
 #define LHU MF_R(1.2)            /* light half edges: horizontal, the other */
 #define LHV MF_R(0.5)
 #define THRESH MF_R(0.02)        /* MC value below which pixels skip the statistics */
 
 static const mf_real alphas[3] = { MF_R(0.1), MF_R(0.25), MF_R(0.5) };
-/* the light's center, high at the back left, and the point it faces */
-static const mf_real light_c[3] = { MF_R(-2.2), MF_R(2.0), MF_R(-1.2) }, light_aim[3] = { MF_R(0.3), 0, MF_R(0.5) };
+/* the light's center, high at the left and a little behind the spheres, and
+ * the point it faces: the camera sees its front face, in the frame */
+static const mf_real light_c[3] = { MF_R(-2.5), MF_R(1.7), MF_R(-0.6) }, light_aim[3] = { MF_R(0.5), MF_R(0.2), MF_R(0.3) };
 /* spheres: center x, y, z, radius (resting on the plane y = 0) */
 static const mf_real sph[3][4] = { { MF_R(-1.3), MF_R(0.5), MF_R(0.2), MF_R(0.5) },
                                    { MF_R(0.15), MF_R(0.65), MF_R(-0.7), MF_R(0.65) },
@@ -169,17 +173,19 @@ static void shade(mf_real alpha, mf_vec3 p, mf_vec3 n, mf_vec3 v, rng *r,
 
 int main(int argc, char **argv)
 {
-    const char *ppm_path = argc > 1 ? argv[1] : "area_light.ppm";
-    const char *pfm_path = argc > 2 ? argv[2] : "area_light.pfm";
-    const mf_real bg = MF_R(0.01), tan_half = MF_R(0.4);    /* about 44 deg vertical field of view */
-    mf_vec3 eye = mf_vec3_make(MF_R(0.0), MF_R(1.8), MF_R(5.5));   /* looking at (0, 0.35, 0) */
-    mf_vec3 fwd = mf_normalize(sub(mf_vec3_make(MF_R(0.0), MF_R(0.35), MF_R(0.0)), eye));
+    const char *base = argc > 1 ? argv[1] : "area_light";
+    const mf_real bg = MF_R(0.01), tan_half = MF_R(0.42);    /* about 46 deg vertical field of view */
+    mf_vec3 eye = mf_vec3_make(MF_R(-0.3), MF_R(1.6), MF_R(6.0));   /* looking at (-0.3, 0.7, 0) */
+    mf_vec3 fwd = mf_normalize(sub(mf_vec3_make(MF_R(-0.3), MF_R(0.7), MF_R(0.0)), eye));
     mf_vec3 right = mf_normalize(mf_cross(fwd, mf_vec3_make(MF_R(0.0), MF_R(1.0), MF_R(0.0))));
     mf_vec3 cup = mf_cross(right, fwd);
-    float *img = (float *)malloc(sizeof(float) * 3 * W * H);
+    ex_image im;
+    float *img;
+    double stat[3][3];   /* per row: the three figures printed */
     long bad = 0;
-    int row, px, py, c;
-    if (!img) { fprintf(stderr, "out of memory\n"); return 1; }
+    int row, px, py, c, err;
+    if (ex_image_init(&im, W, H)) return 1;
+    img = im.lin;
     setup_light();
 
     for (row = 0; row < 3; ++row) {
@@ -203,7 +209,7 @@ int main(int argc, char **argv)
                     if (!(MF_FABS(lt[c]) < MF_BIG) || !(MF_FABS(mc[c]) < MF_BIG)) { ++bad; lt[c] = mc[c] = 0; }
                     out[c] = (float)lt[c];
                     out[c + PW * 3] = (float)mc[c];
-                    out[c + PW * 6] = (float)(MF_R(4.0) * MF_FABS(lt[c] - mc[c]));
+                    out[c + PW * 6] = (float)MF_FABS(lt[c] - mc[c]);
                 }
                 if (obj < 0 || obj == 4) continue;
                 /* statistics on the channel mean, and on the specular part alone */
@@ -214,17 +220,31 @@ int main(int argc, char **argv)
                 dif_s += MF_FABS(sl - sm); sum_s += sm;
             }
         }
+        stat[row][0] = (double)(rel / (mf_real)(cnt > 0 ? cnt : 1));
+        stat[row][1] = (double)(rel_s / (mf_real)(cnt_s > 0 ? cnt_s : 1));
+        stat[row][2] = (double)(dif_s / mf_max(sum_s, MF_EPS));
         printf("alpha %.2f: mean |LTC - MC| / MC = %.4f (%ld px); specular only %.4f (%ld px), "
-               "energy-weighted %.4f\n", (double)alphas[row], (double)(rel / (mf_real)(cnt > 0 ? cnt : 1)), cnt,
-               (double)(rel_s / (mf_real)(cnt_s > 0 ? cnt_s : 1)), cnt_s, (double)(dif_s / mf_max(sum_s, MF_EPS)));
+               "energy-weighted %.4f\n", (double)alphas[row], stat[row][0], cnt, stat[row][1], cnt_s, stat[row][2]);
     }
 
-    /* the difference panel is written linearly */
-    if (write_images(ppm_path, pfm_path, img, W, H, 2 * PW)) { free(img); return 1; }
-    free(img);
+    ex_tonemap(&im, 0, 0, 2 * PW, H, 1.0);
+    ex_colormap(&im, 2 * PW, 0, PW, H, DIFF_MAX);
+    ex_text(&im, 8, 8, 2, "LTC");
+    ex_text(&im, PW + 8, 8, 2, "Monte Carlo, MIS");
+    ex_text(&im, PW + 8, 30, 1, "256 light + 256 BRDF samples");
+    ex_text(&im, 2 * PW + 8, 8, 2, "|LTC - MC|");
+    for (row = 0; row < 3; ++row) {
+        int y = row * PH;
+        ex_label(&im, 8, y + PH - 22, 2, "GGX alpha %g", (double)alphas[row]);
+        ex_label(&im, 2 * PW + 8, y + (row ? 8 : 30), 1, "mean |LTC - MC| / MC: %.3f", stat[row][0]);
+        ex_label(&im, 2 * PW + 8, y + (row ? 20 : 42), 1, "specular only: %.3f", stat[row][1]);
+        ex_label(&im, 2 * PW + 8, y + (row ? 32 : 54), 1, "specular, energy-weighted: %.3f", stat[row][2]);
+    }
+    ex_colorbar(&im, 2 * PW + 8, H - 30, PW - 16, 10, DIFF_MAX, "|LTC - MC|, radiance");
+    err = ex_write(&im, base);
+    ex_image_free(&im);
 
-    printf("rows: GGX alpha 0.1, 0.25, 0.5; columns: LTC, Monte Carlo, |LTC - MC| x 4\n");
+    printf("rows: GGX alpha 0.1, 0.25, 0.5; columns: LTC, Monte Carlo, |LTC - MC|\n");
     printf("non-finite values: %ld\n", bad);
-    printf("wrote %s (tonemapped) and %s (linear)\n", ppm_path, pfm_path);
-    return bad != 0;
+    return bad != 0 || err;
 }

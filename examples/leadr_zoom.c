@@ -12,12 +12,13 @@
  *      ordinary normal-mapped material: at a distance the sea turns into a
  *      flat mirror with a tiny, too-sharp sun highlight.
  * Both rows use water's Fresnel factor (eta 1.33) at the half vector.
- * 4 jittered samples per pixel (about 3.5 s on one core at -O2). Writes a
- * tonemapped PPM and a linear PFM and prints the count of non-finite samples
+ * 4 jittered samples per pixel (about 3.5 s on one core at -O2). Writes
+ * base.png (tone mapped, rows and tile sizes labelled), base.pfm (linear) and,
+ * built with OpenEXR, base.exr, and prints the count of non-finite samples
  * (expected 0; the exit status is 1 otherwise).
  *
  *   cc -O2 -I. examples/leadr_zoom.c -o leadr_zoom -lm   (from the repo root)
- *   ./leadr_zoom [out.ppm] [out.pfm]                    (leadr_zoom.ppm, .pfm)
+ *   ./leadr_zoom [base]                                 (default: leadr_zoom)
  */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
@@ -127,8 +128,7 @@ static mf_vec3 shade_naive(mf_leadr a, mf_vec3 wo, mf_vec3 sun)
 
 int main(int argc, char **argv)
 {
-    const char *ppm_path = argc > 1 ? argv[1] : "leadr_zoom.ppm";
-    const char *pfm_path = argc > 2 ? argv[2] : "leadr_zoom.pfm";
+    const char *base = argc > 1 ? argv[1] : "leadr_zoom";
     const mf_real deg = MF_PI / MF_R(180.0), cam_h = MF_R(1.0);
     const mf_real th = view_deg * deg, se = sun_deg * deg;
     /* camera at (0, 0, cam_h) looking along +y, tilted th from straight down */
@@ -141,19 +141,21 @@ int main(int argc, char **argv)
     /* width of the view at the center ray's hit point, in world units */
     const mf_real center_width = MF_R(2.0) * tan_h * cam_h / MF_COS(th);
     mf_real *h = (mf_real *)malloc(sizeof(mf_real) * N * N);
-    float *img = (float *)malloc(sizeof(float) * 3 * W * H);
+    ex_image im;
+    float *img;
     mf_leadr_map map;
     mf_leadr top;
     mf_result res;
     long bad = 0;
-    int px, py, s, c;
-    if (!h || !img) { fprintf(stderr, "out of memory\n"); free(h); free(img); return 1; }
+    int px, py, s, c, err;
+    if (!h || ex_image_init(&im, W, H)) { fprintf(stderr, "out of memory\n"); free(h); return 1; }
+    img = im.lin;
     make_heights(h);
     res = mf_leadr_map_from_heights(&map, h, N, N, base_alpha, base_alpha);
     free(h);
     if (res != MF_SUCCESS) {
         fprintf(stderr, "moment map: %s\n", mf_result_string(res));
-        free(img);
+        ex_image_free(&im);
         return 1;
     }
     top = map.texels[map.offset[map.levels - 1]];   /* the mean over the whole tile */
@@ -188,13 +190,18 @@ int main(int argc, char **argv)
             for (c = 0; c < 3; ++c) img[3 * (py * W + px) + c] = (float)(sum[c] / (mf_real)SPP);
         }
     mf_leadr_map_release(&map);
-    if (write_images(ppm_path, pfm_path, img, W, H, W)) { free(img); return 1; }
-    free(img);
+    ex_tonemap_all(&im, 1.0);
+    for (px = 0; px < COLS; ++px) {
+        ex_label(&im, px * PW + 4, 4, 1, "tile: 1/%g panel width", (double)tiles[px]);
+        ex_text(&im, px * PW + 4, 16, 1, "LEADR moments");
+        ex_text(&im, px * PW + 4, PH + 4, 1, "naive mip-mapped normals");
+    }
+    err = ex_write(&im, base);
+    ex_image_free(&im);
     printf("%d x %d panels of %d x %d: the tile spans 1/%g, 1/%g, 1/%g, 1/%g of the panel width\n",
            COLS, 2, PW, PH, (double)tiles[0], (double)tiles[1], (double)tiles[2], (double)tiles[3]);
     printf("rows: LEADR moments, naive mip-mapped normals (base alpha %g, RMS slope %.3f)\n", (double)base_alpha,
            (double)MF_SQRT(top.E_xx + top.E_yy - base_alpha * base_alpha));
     printf("non-finite samples: %ld\n", bad);
-    printf("wrote %s (tonemapped) and %s (linear)\n", ppm_path, pfm_path);
-    return bad != 0;
+    return bad != 0 || err;
 }
