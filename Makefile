@@ -27,7 +27,7 @@ EXR_HDR    := tools/exr_io.h
 endif
 
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check config-check package-check ltc-table $(foreach s,header warnings config package readme quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
+        header header-check config-check package-check ltc-table $(foreach s,header warnings config package readme examples quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
 
@@ -119,7 +119,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header c_double c_float warnings config package readme cpp_double cpp_float
+TEST_STEPS := header c_double c_float warnings config package readme examples cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -127,6 +127,8 @@ step-header: | $(RES)
 	@$(RUN_STEP) header $(RES)/header check $(MAKE) --no-print-directory header-check
 step-warnings: | $(RES)
 	@$(RUN_STEP) warnings $(RES)/warnings check sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
+step-examples: | $(RES)
+	@$(RUN_STEP) examples $(RES)/examples tests sh tests/examples_check.sh "$(CC)" "$(WARN)" $(BUILD) "$(EXR_DEFS)" "$(EXR_LIBS)"
 step-readme: | $(RES)
 	@$(RUN_STEP) readme $(RES)/readme check sh tests/readme_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 step-package: | $(RES)
