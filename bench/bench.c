@@ -421,6 +421,27 @@ static double b_brdf_sample(const mf_ndf *d)
     }
     return s;
 }
+/* sample, reflect, pdf: plain VNDF and bounded VNDF (the same work) */
+static double b_vndf_pdf(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_vec3 wi = mf_reflect(g_wo[i], mf_sample_visible(d, g_wo[i], g_u1[i], g_u2[i]));
+        s += (double)mf_brdf_pdf(d, g_wo[i], wi);
+    }
+    return s;
+}
+static double b_bounded_pdf(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_vec3 wi = mf_reflect(g_wo[i], mf_ggx_sample_visible_bounded(d, g_wo[i], g_u1[i], g_u2[i]));
+        s += (double)mf_ggx_brdf_pdf_bounded(d, g_wo[i], wi);
+    }
+    return s;
+}
 static double b_heitz2018(const mf_ndf *d) { LOOP(heitz2018_vndf(g_wo[i], d->ax, d->ay, g_u1[i], g_u2[i]).z); }
 static double b_ggx_inline(const mf_ndf *d) { LOOP(mf_ggx_sample_visible(d->ax, d->ay, g_wo[i], g_u1[i], g_u2[i]).z); }
 static double b_plain_D(const mf_ndf *d) { LOOP(plain_ggx_D(d->ax, d->ay, g_wm[i])); }
@@ -475,6 +496,9 @@ int main(void)
         printf("bench ggx_D_generic %.2f ratio=%.3f\n", od, od / pd);
         printf("bench ggx_G2_plain_baseline %.2f\n", pg);
         printf("bench ggx_G2_generic %.2f ratio=%.3f\n", og, og / pg);
+        run_pair(b_vndf_pdf, b_bounded_pdf, g, &base, &ours);
+        printf("bench ggx_vndf_sample_pdf_baseline %.2f\n", base);
+        printf("bench ggx_bounded_vndf_sample_pdf %.2f ratio=%.3f\n", ours, ours / base);
     }
     for (k = 0; k < 5; ++k) {
         const mf_ndf *d = &ks[k].d;

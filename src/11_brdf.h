@@ -58,3 +58,58 @@ MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     lo = mf_lambda(d, wo);
     return (MF_R(1.0) + lo) / (MF_R(1.0) + lo + mf_lambda(d, wi));
 }
+
+/* GGX bounded visible-normal sampling (Eto & Tokuyoshi 2023, "Bounded VNDF
+ * Sampling for Smith-GGX Reflections", Listings 1-2). The spherical cap of
+ * Dupuy & Benyoub 2023 is shrunk by k (the paper's Eq. 5, with a = min(ax, ay)
+ * for anisotropic GGX, Eq. 6) to a cap that still holds every normal whose
+ * reflection of wo is above the horizon but far fewer of the others: fewer
+ * samples lost (none for isotropic GGX at normal incidence; at alpha 0.5 and
+ * 80 degrees 1.4% instead of 7.5%) and a lower-variance estimator (plain /
+ * bounded variance of the albedo estimate 2.2 at alpha 0.5, 2.5 to 4 at alpha
+ * 1; test_materials). A reflection below the horizon is still possible and
+ * counts as no sample. Returns a normal wm (reflect wo on it for wi, as after
+ * mf_sample_visible); the zero vector when wo.z <= 0. Any other kind than untransformed GGX falls back to
+ * mf_sample_visible, and mf_ggx_brdf_pdf_bounded to mf_brdf_pdf, so the pair
+ * stays consistent for every mf_ndf. */
+MF_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
+{
+    mf_real a = mf_clamp(mf_min(ax, ay), MF_R(0.0), MF_R(1.0)), a2 = a * a;
+    mf_real s = MF_R(1.0) + MF_SQRT(wo.x * wo.x + wo.y * wo.y), s2 = s * s;
+    return (MF_R(1.0) - a2) * s2 / (s2 + a2 * wo.z * wo.z);   /* Eq. 5 */
+}
+MF_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+{
+    mf_vec3 v, h;
+    mf_real ax, ay, l2, phi, b, z, s;
+    if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
+    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    ax = d->ax; ay = d->ay;
+    v = mf_vec3_make(ax * wo.x, ay * wo.y, wo.z);              /* the hemisphere configuration */
+    l2 = mf_dot(v, v);
+    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
+    phi = MF_R(2.0) * MF_PI * mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    b = mf__ggx_bounded_k(ax, ay, wo) * v.z;                    /* the cap's lower bound -b */
+    z = (MF_R(1.0) - mf_clamp(u2, MF_R(0.0), MF_R(1.0))) * (MF_R(1.0) + b) - b;
+    s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
+    h = mf_vec3_make(ax * (s * MF_COS(phi) + v.x), ay * (s * MF_SIN(phi) + v.y), mf_max(z + v.z, MF_R(0.0)));
+    l2 = mf_dot(h, h);
+    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(l2));
+}
+/* Density per unit solid angle of wi = reflect(wo, wm) for wm from
+ * mf_ggx_sample_visible_bounded (paper Listing 2): D(wm) / (2 (k wo.z + t)),
+ * t = |(ax wo.x, ay wo.y, wo.z)|; plain VNDF sampling is the case k = 1. */
+MF_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_vec3 wh;
+    mf_real t, k;
+    if (d->type != MF_NDF_GGX || d->transformed) return mf_brdf_pdf(d, wo, wi);
+    if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
+    wh = mf_normalize(mf_add(wo, wi));
+    if (!(mf_dot(wo, wh) > MF_R(0.0))) return MF_R(0.0);
+    t = MF_SQRT(d->ax * d->ax * wo.x * wo.x + d->ay * d->ay * wo.y * wo.y + wo.z * wo.z);
+    k = mf__ggx_bounded_k(d->ax, d->ay, wo);
+    return mf_min(mf_ggx_D(d->ax, d->ay, wh) / (MF_R(2.0) * (k * wo.z + t)), MF_BIG);
+}

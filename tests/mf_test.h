@@ -72,6 +72,7 @@ void test_leadr(void);
 void test_tabulated(void);
 void test_ibm(void);
 void test_microsurface(void);
+void test_materials(void);
 
 /* The same inline and cold-path computations, compiled in each unit that
  * calls them: test_tu2 compares its own with those of tests/main.c. The

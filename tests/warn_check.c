@@ -40,7 +40,8 @@ int main(void)
         mf_vec3 ws = mf_brdf_sample(d, wo, MF_R(0.2), MF_R(0.9));
         s += mf_D(d, wm) + mf_lambda(d, wo) + mf_G1(d, wo, wm) + mf_G2(d, wo, wi, wm) + mf_G2_separable(d, wo, wi, wm);
         s += mf_D_visible(d, wo, wm) + wd.z + ws.z + mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi);
-        s += mf_brdf_sample_weight(d, wo, wi) + mf_projected_area(d, wo);
+        s += mf_brdf_sample_weight(d, wo, wi) + mf_projected_area(d, wo) + mf_ggx_brdf_pdf_bounded(d, wo, wi);
+        s += mf_ggx_sample_visible_bounded(d, wo, MF_R(0.3), MF_R(0.6)).z;
     }
     s += mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo) + mf_erfinv(MF_R(0.3));
     s += mf_fresnel_dielectric(MF_R(0.5), MF_R(1.5)) + mf_fresnel_conductor(MF_R(0.5), MF_R(0.2), MF_R(3.0));
