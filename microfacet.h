@@ -44,7 +44,8 @@
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 9. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
- *   == 11. Specular microfacet BRDF: eval, sample, pdf
+ *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
+ *         sampling; Fresnel averages
  *   == 12. LEADR slope moments: the linear type, deformation, height scaling,
  *          mean normal, covariance; moment mip maps
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
@@ -148,6 +149,12 @@
  *          Non-inline symbols carry their precision (mf_..._f32/_f64).
  *          Opt-outs MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM,
  *          MF_NO_MICROSURFACE; MF_ASSERT removed (it was never used).
+ *          Shading frames (mf_basis: mf_basis_from, mf_to_local, mf_to_world,
+ *          mf_basis_ltc), mf_rotated, roughness conventions
+ *          (mf_alpha_from_roughness, mf_beckmann_alpha_from_sigma and
+ *          inverses), Fresnel helpers (f0 and ior, Schlick with f90,
+ *          Gulbrandsen's artist conductor, hemispherical averages), GGX
+ *          bounded visible-normal sampling (Eto & Tokuyoshi 2023).
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
@@ -387,6 +394,8 @@ typedef float mf_real;
 #define mf__tabulated_sample_D MF__SYM(mf__tabulated_sample_D)
 #define mf__tabulated_sample_visible MF__SYM(mf__tabulated_sample_visible)
 #define mf__iso_sample_visible_view MF__SYM(mf__iso_sample_visible_view)
+#define mf_fresnel_dielectric_average MF__SYM(mf_fresnel_dielectric_average)
+#define mf_fresnel_conductor_average MF__SYM(mf_fresnel_conductor_average)
 #define mf_leadr_map_from_heights MF__SYM(mf_leadr_map_from_heights)
 #define mf_leadr_map_from_normals MF__SYM(mf_leadr_map_from_normals)
 #define mf_leadr_map_release MF__SYM(mf_leadr_map_release)
@@ -438,6 +447,9 @@ typedef enum mf_result {
 } mf_result;
 typedef struct mf_vec3 { mf_real x, y, z; } mf_vec3;
 typedef struct mf_mat2 { mf_real m00, m01, m10, m11; } mf_mat2; /* row-major */
+/* An orthonormal, right-handed shading frame: t (tangent, the x axis of the
+ * local frame, along which alpha_x applies), b = n x t, n (the z axis). */
+typedef struct mf_basis { mf_vec3 t, b, n; } mf_basis;
 typedef struct mf_ndf_beckmann { char none; } mf_ndf_beckmann;   /* no parameters beyond mf_ndf.ax, ay */
 typedef struct mf_ndf_ggx { char none; } mf_ndf_ggx;   /* no parameters beyond mf_ndf.ax, ay */
 typedef struct mf_ndf_gtr {
@@ -580,6 +592,46 @@ MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
     *t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
     *b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
 }
+
+/* The shading frame of the normal n and a tangent: n normalized, the tangent
+ * made orthogonal to it (Gram-Schmidt). When the tangent is zero, not finite
+ * or parallel to n (its orthogonal part below 1e-4 of its length), any
+ * orthonormal frame around n (mf_frame); a zero or non-finite n gives the
+ * identity frame. Orthonormal to float precision for every input. */
+MF_INLINE mf_basis mf_basis_from(mf_vec3 n, mf_vec3 tangent)
+{
+    mf_basis f;
+    mf_real tl2, pl2;
+    mf_vec3 p;
+    n = mf_normalize(n);
+    if (!(n.x * n.x + n.y * n.y + n.z * n.z > MF_R(0.5))) n = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    f.n = n;
+    tl2 = mf_dot(tangent, tangent);
+    p = mf_add(tangent, mf_scale(n, -mf_dot(tangent, n)));
+    pl2 = mf_dot(p, p);
+    if (tl2 < MF_BIG && pl2 > MF_R(1e-8) * tl2 && pl2 > MF_R(0.0)) {
+        f.t = mf_scale(p, MF_R(1.0) / MF_SQRT(pl2));
+        f.t = mf_normalize(mf_add(f.t, mf_scale(n, -mf_dot(f.t, n))));   /* second pass: float */
+        f.b = mf_cross(n, f.t);
+    } else mf_frame(n, &f.t, &f.b);
+    return f;
+}
+/* The frame's coordinates of a world direction, and back. */
+MF_INLINE mf_vec3 mf_to_local(const mf_basis *f, mf_vec3 w)
+{
+    return mf_vec3_make(mf_dot(w, f->t), mf_dot(w, f->b), mf_dot(w, f->n));
+}
+MF_INLINE mf_vec3 mf_to_world(const mf_basis *f, mf_vec3 w)
+{
+    return mf_add(mf_add(mf_scale(f->t, w.x), mf_scale(f->b, w.y)), mf_scale(f->n, w.z));
+}
+/* The frame the LTC functions expect (Heitz et al. 2016): n and the tangent
+ * in the plane of n and wo (world), so that wo is (sin, 0, cos) locally with
+ * a non-negative x. Any frame around n when wo is parallel to n. */
+MF_INLINE mf_basis mf_basis_ltc(mf_vec3 n, mf_vec3 wo)
+{
+    return mf_basis_from(n, wo);
+}
 /* ======================================================================== */
 /* == 3. Fresnel                                                            */
 /* ======================================================================== */
@@ -633,6 +685,68 @@ MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
     f0 = mf_clamp(f0, MF_R(0.0), MF_R(1.0));
     mf_real m2 = m * m;
     return f0 + (MF_R(1.0) - f0) * m2 * m2 * m;
+}
+
+/* Normal-incidence reflectance of a dielectric of relative index eta,
+ * ((eta - 1) / (eta + 1))^2, and the eta > 1 giving f0 (f0 in [0, 1), clamped
+ * below 1 - 1e-6). Non-finite or non-positive input gives 0 / 1. */
+MF_INLINE mf_real mf_f0_from_ior(mf_real eta)
+{
+    mf_real r;
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG)) return MF_R(0.0);
+    r = (eta - MF_R(1.0)) / (eta + MF_R(1.0));
+    return r * r;
+}
+MF_INLINE mf_real mf_ior_from_f0(mf_real f0)
+{
+    mf_real s;
+    if (!(f0 > MF_R(0.0))) return MF_R(1.0);
+    s = MF_SQRT(mf_min(f0, MF_R(1.0) - MF_R(1e-6)));
+    return (MF_R(1.0) + s) / (MF_R(1.0) - s);
+}
+
+/* Schlick with an edge value: f0 + (f90 - f0)(1 - cos)^5 (f90 = 1 is
+ * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular occlusion). */
+MF_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_theta)
+{
+    mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0)), m2;
+    if (!(m == m)) m = MF_R(0.0);
+    f0 = mf_clamp(f0, MF_R(0.0), MF_R(1.0));
+    f90 = mf_clamp(f90, MF_R(0.0), MF_R(1.0));
+    m2 = m * m;
+    return f0 + (f90 - f0) * m2 * m2 * m;
+}
+
+/* Artist-friendly conductor Fresnel (Gulbrandsen 2014, "Artist Friendly
+ * Metallic Fresnel", JCGT 3(4)): reflectivity r (the color at normal
+ * incidence) and edge tint g, both in [0, 1] per channel, to the complex index
+ * eta + i k whose exact Fresnel (mf_fresnel_conductor) has f0 = r (Eqs. 3-4):
+ *   eta = g (1 - r) / (1 + r) + (1 - g) (1 + sqrt r) / (1 - sqrt r),
+ *   k = sqrt((r (eta + 1)^2 - (eta - 1)^2) / (1 - r)).
+ * r is clamped to [0, 0.9999], g to [0, 1]. And back: r from eta and k, g
+ * from where eta lies between the two limits. */
+MF_INLINE void mf_conductor_from_artist(mf_real r, mf_real g, mf_real *eta, mf_real *k)
+{
+    mf_real sr, n, k2;
+    r = r == r ? mf_clamp(r, MF_R(0.0), MF_R(0.9999)) : MF_R(0.0);
+    g = g == g ? mf_clamp(g, MF_R(0.0), MF_R(1.0)) : MF_R(0.0);
+    sr = MF_SQRT(r);
+    n = g * (MF_R(1.0) - r) / (MF_R(1.0) + r) + (MF_R(1.0) - g) * (MF_R(1.0) + sr) / (MF_R(1.0) - sr);
+    k2 = (r * (n + MF_R(1.0)) * (n + MF_R(1.0)) - (n - MF_R(1.0)) * (n - MF_R(1.0))) / (MF_R(1.0) - r);
+    *eta = n;
+    *k = MF_SQRT(mf_max(k2, MF_R(0.0)));
+}
+MF_INLINE void mf_artist_from_conductor(mf_real eta, mf_real k, mf_real *r, mf_real *g)
+{
+    mf_real sr, nmin, nmax, rr;
+    if (!(eta > MF_R(0.0)) || !(k >= MF_R(0.0)) || !(eta < MF_BIG) || !(k < MF_BIG)) { *r = *g = MF_R(0.0); return; }
+    rr = ((eta - MF_R(1.0)) * (eta - MF_R(1.0)) + k * k) / ((eta + MF_R(1.0)) * (eta + MF_R(1.0)) + k * k);
+    rr = mf_clamp(rr, MF_R(0.0), MF_R(0.9999));
+    sr = MF_SQRT(rr);
+    nmin = (MF_R(1.0) - rr) / (MF_R(1.0) + rr);
+    nmax = (MF_R(1.0) + sr) / (MF_R(1.0) - sr);
+    *r = rr;
+    *g = nmax > nmin ? mf_clamp((nmax - eta) / (nmax - nmin), MF_R(0.0), MF_R(1.0)) : MF_R(0.0);
 }
 /* ======================================================================== */
 /* == 4. Special functions                                                  */
@@ -800,6 +914,24 @@ typedef struct mf_ndf {
 MF_INLINE mf_real mf__clamp_alpha(mf_real a)
 {
     return a > MF_ALPHA_MIN ? (a < MF_ALPHA_MAX ? a : MF_ALPHA_MAX) : MF_ALPHA_MIN;
+}
+
+/* Roughness conventions. Constructors take alpha, the slope scale of the
+ * distribution (GGX, Beckmann: alpha^2 = mean tan^2 of Beckmann normals).
+ * Perceptual roughness r (Burley 2012, Disney principled BRDF; glTF 2.0
+ * metallic-roughness, Filament, UE4) maps to alpha = r^2; Beckmann written
+ * with sigma, the standard deviation of the slope along one axis (a Gaussian
+ * height field, LEADR's per-axis variance sigma^2), has alpha = sqrt(2) sigma.
+ * Negative or NaN input gives 0 (which constructors clamp to their minimum). */
+MF_INLINE mf_real mf_alpha_from_roughness(mf_real r) { return r > MF_R(0.0) ? mf_min(r * r, MF_BIG) : MF_R(0.0); }
+MF_INLINE mf_real mf_roughness_from_alpha(mf_real alpha) { return alpha > MF_R(0.0) ? MF_SQRT(mf_min(alpha, MF_BIG)) : MF_R(0.0); }
+MF_INLINE mf_real mf_beckmann_alpha_from_sigma(mf_real sigma)
+{
+    return sigma > MF_R(0.0) ? mf_min(sigma * MF_R(1.41421356237309505), MF_BIG) : MF_R(0.0);
+}
+MF_INLINE mf_real mf_beckmann_sigma_from_alpha(mf_real alpha)
+{
+    return alpha > MF_R(0.0) ? mf_min(alpha, MF_BIG) * MF_R(0.70710678118654752) : MF_R(0.0);
 }
 
 /* An untransformed distribution of the given kind and (clamped) roughness,
@@ -1269,6 +1401,18 @@ MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
     return d;
 }
 
+/* d rotated by angle (radians, counterclockwise about the normal): the
+ * transform by the rotation R (thesis ch. 4; for a rotation M^-T = M), so
+ * D_rotated(m) = D(R^-1 m). Turns an anisotropic lobe, e.g. to follow a
+ * brushing direction, without rebuilding the frame. */
+MF_INLINE mf_ndf mf_rotated(mf_ndf d, mf_real angle)
+{
+    mf_real c, s;
+    if (!(angle == angle) || !(MF_FABS(angle) < MF_R(1e6))) return d;
+    c = MF_COS(angle); s = MF_SIN(angle);
+    return mf_transformed(d, mf_mat2_make(c, -s, s, c));
+}
+
 /* Stretch matrix M_s (Eq. 4.24): diag(1/(1-s), 1-s) for s in [0,1),
  * diag(1+s, 1/(1+s)) for s in (-1,0); det M_s = 1, M_s^-1 = M_-s (Eq. 4.25).
  * s is clamped to [-0.999, 0.999]. */
@@ -1624,6 +1768,18 @@ MF_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
     k = mf__ggx_bounded_k(d->ax, d->ay, wo);
     return mf_min(mf_ggx_D(d->ax, d->ay, wh) / (MF_R(2.0) * (k * wo.z + t)), MF_BIG);
 }
+
+/* Hemispherical averages of the Fresnel terms, F_avg = 2 int_0^1 F(mu) mu dmu
+ * (Kulla & Conty 2017, the energy-compensation average; 1 - F_avg is the
+ * share a cosine-distributed light transmits). Dielectric of relative index
+ * eta (eta < 1: seen from the denser side, total internal reflection below
+ * the critical cosine mu_c = sqrt(1 - eta^2)), conductor eta + i k. On each
+ * side of mu_c (0 when eta >= 1), 8 panels of 8-point Gauss-Legendre in t,
+ * mu = mu_c -+ len t^2, which smooths the square root at the critical angle;
+ * within 1e-8 of a dense integral in double, 1e-6 in float (test_materials). */
+MF_COLD mf_real mf_fresnel_dielectric_average(mf_real eta);
+MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k);
+
 #ifndef MF_NO_LEADR
 /* ======================================================================== */
 /* == 12. LEADR slope moments                                               */
@@ -3555,6 +3711,29 @@ MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real
     m = mf__iso_sample_visible(d, cv, sv, u1, u2);
     return mf_normalize(mf_vec3_make(ax * (cp * m.x - sp * m.y), ay * (sp * m.x + cp * m.y), m.z));
 }
+/* Fresnel averages (section 11): the quadrature. */
+MF_INLINE mf_real mf__fresnel_average(mf_real eta, mf_real k, int conductor)
+{
+    mf_real mu_c = MF_R(0.0), sum = MF_R(0.0);
+    int side, p, i;
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(k >= MF_R(0.0)) || !(k < MF_BIG)) return MF_R(0.0);
+    if (eta < MF_R(1.0)) mu_c = MF_SQRT(MF_R(1.0) - eta * eta);   /* where F drops from (near) 1 */
+    for (side = 0; side < 2; ++side) {
+        mf_real len = side ? MF_R(1.0) - mu_c : mu_c;   /* mu = mu_c -+ len t^2 */
+        if (!(len > MF_R(0.0))) continue;
+        for (p = 0; p < 8; ++p)
+            for (i = 0; i < 8; ++i) {
+                mf_real t = ((mf_real)p + MF_R(0.5) + MF_R(0.5) * mf__gl_xi(i)) / MF_R(8.0);
+                mf_real mu = side ? mu_c + len * t * t : mu_c - len * t * t;
+                mf_real f = conductor ? mf_fresnel_conductor(mu, eta, k) : mf_fresnel_dielectric(mu, eta);
+                /* 2 F mu dmu, dmu = 2 len t dt, panel width 1/8 (weights sum to 1) */
+                sum += mf__gl_w(i) * MF_R(4.0) * len * f * mu * t / MF_R(8.0);
+            }
+    }
+    return mf_clamp(sum, MF_R(0.0), MF_R(1.0));
+}
+MF_COLD mf_real mf_fresnel_dielectric_average(mf_real eta) { return mf__fresnel_average(eta, MF_R(0.0), 0); }
+MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k) { return mf__fresnel_average(eta, k, 1); }
 #ifndef MF_NO_IBM
 /* one field of `w` bits (w <= 32) of a packed array */
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)

@@ -36,7 +36,8 @@
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 9. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
- *   == 11. Specular microfacet BRDF: eval, sample, pdf
+ *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
+ *         sampling; Fresnel averages
  *   == 12. LEADR slope moments: the linear type, deformation, height scaling,
  *          mean normal, covariance; moment mip maps
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
@@ -140,4 +141,10 @@
  *          Non-inline symbols carry their precision (mf_..._f32/_f64).
  *          Opt-outs MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM,
  *          MF_NO_MICROSURFACE; MF_ASSERT removed (it was never used).
+ *          Shading frames (mf_basis: mf_basis_from, mf_to_local, mf_to_world,
+ *          mf_basis_ltc), mf_rotated, roughness conventions
+ *          (mf_alpha_from_roughness, mf_beckmann_alpha_from_sigma and
+ *          inverses), Fresnel helpers (f0 and ior, Schlick with f90,
+ *          Gulbrandsen's artist conductor, hemispherical averages), GGX
+ *          bounded visible-normal sampling (Eto & Tokuyoshi 2023).
  */

@@ -1,6 +1,9 @@
 /* @decl */
 typedef struct mf_vec3 { mf_real x, y, z; } mf_vec3;
 typedef struct mf_mat2 { mf_real m00, m01, m10, m11; } mf_mat2; /* row-major */
+/* An orthonormal, right-handed shading frame: t (tangent, the x axis of the
+ * local frame, along which alpha_x applies), b = n x t, n (the z axis). */
+typedef struct mf_basis { mf_vec3 t, b, n; } mf_basis;
 /* @api */
 /* ======================================================================== */
 /* == 2. Vectors and frames                                                 */
@@ -89,4 +92,44 @@ MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
     mf_real c = n.x * n.y * a;
     *t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
     *b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
+}
+
+/* The shading frame of the normal n and a tangent: n normalized, the tangent
+ * made orthogonal to it (Gram-Schmidt). When the tangent is zero, not finite
+ * or parallel to n (its orthogonal part below 1e-4 of its length), any
+ * orthonormal frame around n (mf_frame); a zero or non-finite n gives the
+ * identity frame. Orthonormal to float precision for every input. */
+MF_INLINE mf_basis mf_basis_from(mf_vec3 n, mf_vec3 tangent)
+{
+    mf_basis f;
+    mf_real tl2, pl2;
+    mf_vec3 p;
+    n = mf_normalize(n);
+    if (!(n.x * n.x + n.y * n.y + n.z * n.z > MF_R(0.5))) n = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    f.n = n;
+    tl2 = mf_dot(tangent, tangent);
+    p = mf_add(tangent, mf_scale(n, -mf_dot(tangent, n)));
+    pl2 = mf_dot(p, p);
+    if (tl2 < MF_BIG && pl2 > MF_R(1e-8) * tl2 && pl2 > MF_R(0.0)) {
+        f.t = mf_scale(p, MF_R(1.0) / MF_SQRT(pl2));
+        f.t = mf_normalize(mf_add(f.t, mf_scale(n, -mf_dot(f.t, n))));   /* second pass: float */
+        f.b = mf_cross(n, f.t);
+    } else mf_frame(n, &f.t, &f.b);
+    return f;
+}
+/* The frame's coordinates of a world direction, and back. */
+MF_INLINE mf_vec3 mf_to_local(const mf_basis *f, mf_vec3 w)
+{
+    return mf_vec3_make(mf_dot(w, f->t), mf_dot(w, f->b), mf_dot(w, f->n));
+}
+MF_INLINE mf_vec3 mf_to_world(const mf_basis *f, mf_vec3 w)
+{
+    return mf_add(mf_add(mf_scale(f->t, w.x), mf_scale(f->b, w.y)), mf_scale(f->n, w.z));
+}
+/* The frame the LTC functions expect (Heitz et al. 2016): n and the tangent
+ * in the plane of n and wo (world), so that wo is (sin, 0, cos) locally with
+ * a non-negative x. Any frame around n when wo is parallel to n. */
+MF_INLINE mf_basis mf_basis_ltc(mf_vec3 n, mf_vec3 wo)
+{
+    return mf_basis_from(n, wo);
 }

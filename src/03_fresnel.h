@@ -53,3 +53,65 @@ MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
     mf_real m2 = m * m;
     return f0 + (MF_R(1.0) - f0) * m2 * m2 * m;
 }
+
+/* Normal-incidence reflectance of a dielectric of relative index eta,
+ * ((eta - 1) / (eta + 1))^2, and the eta > 1 giving f0 (f0 in [0, 1), clamped
+ * below 1 - 1e-6). Non-finite or non-positive input gives 0 / 1. */
+MF_INLINE mf_real mf_f0_from_ior(mf_real eta)
+{
+    mf_real r;
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG)) return MF_R(0.0);
+    r = (eta - MF_R(1.0)) / (eta + MF_R(1.0));
+    return r * r;
+}
+MF_INLINE mf_real mf_ior_from_f0(mf_real f0)
+{
+    mf_real s;
+    if (!(f0 > MF_R(0.0))) return MF_R(1.0);
+    s = MF_SQRT(mf_min(f0, MF_R(1.0) - MF_R(1e-6)));
+    return (MF_R(1.0) + s) / (MF_R(1.0) - s);
+}
+
+/* Schlick with an edge value: f0 + (f90 - f0)(1 - cos)^5 (f90 = 1 is
+ * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular occlusion). */
+MF_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_theta)
+{
+    mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0)), m2;
+    if (!(m == m)) m = MF_R(0.0);
+    f0 = mf_clamp(f0, MF_R(0.0), MF_R(1.0));
+    f90 = mf_clamp(f90, MF_R(0.0), MF_R(1.0));
+    m2 = m * m;
+    return f0 + (f90 - f0) * m2 * m2 * m;
+}
+
+/* Artist-friendly conductor Fresnel (Gulbrandsen 2014, "Artist Friendly
+ * Metallic Fresnel", JCGT 3(4)): reflectivity r (the color at normal
+ * incidence) and edge tint g, both in [0, 1] per channel, to the complex index
+ * eta + i k whose exact Fresnel (mf_fresnel_conductor) has f0 = r (Eqs. 3-4):
+ *   eta = g (1 - r) / (1 + r) + (1 - g) (1 + sqrt r) / (1 - sqrt r),
+ *   k = sqrt((r (eta + 1)^2 - (eta - 1)^2) / (1 - r)).
+ * r is clamped to [0, 0.9999], g to [0, 1]. And back: r from eta and k, g
+ * from where eta lies between the two limits. */
+MF_INLINE void mf_conductor_from_artist(mf_real r, mf_real g, mf_real *eta, mf_real *k)
+{
+    mf_real sr, n, k2;
+    r = r == r ? mf_clamp(r, MF_R(0.0), MF_R(0.9999)) : MF_R(0.0);
+    g = g == g ? mf_clamp(g, MF_R(0.0), MF_R(1.0)) : MF_R(0.0);
+    sr = MF_SQRT(r);
+    n = g * (MF_R(1.0) - r) / (MF_R(1.0) + r) + (MF_R(1.0) - g) * (MF_R(1.0) + sr) / (MF_R(1.0) - sr);
+    k2 = (r * (n + MF_R(1.0)) * (n + MF_R(1.0)) - (n - MF_R(1.0)) * (n - MF_R(1.0))) / (MF_R(1.0) - r);
+    *eta = n;
+    *k = MF_SQRT(mf_max(k2, MF_R(0.0)));
+}
+MF_INLINE void mf_artist_from_conductor(mf_real eta, mf_real k, mf_real *r, mf_real *g)
+{
+    mf_real sr, nmin, nmax, rr;
+    if (!(eta > MF_R(0.0)) || !(k >= MF_R(0.0)) || !(eta < MF_BIG) || !(k < MF_BIG)) { *r = *g = MF_R(0.0); return; }
+    rr = ((eta - MF_R(1.0)) * (eta - MF_R(1.0)) + k * k) / ((eta + MF_R(1.0)) * (eta + MF_R(1.0)) + k * k);
+    rr = mf_clamp(rr, MF_R(0.0), MF_R(0.9999));
+    sr = MF_SQRT(rr);
+    nmin = (MF_R(1.0) - rr) / (MF_R(1.0) + rr);
+    nmax = (MF_R(1.0) + sr) / (MF_R(1.0) - sr);
+    *r = rr;
+    *g = nmax > nmin ? mf_clamp((nmax - eta) / (nmax - nmin), MF_R(0.0), MF_R(1.0)) : MF_R(0.0);
+}

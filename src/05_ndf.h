@@ -69,6 +69,24 @@ MF_INLINE mf_real mf__clamp_alpha(mf_real a)
     return a > MF_ALPHA_MIN ? (a < MF_ALPHA_MAX ? a : MF_ALPHA_MAX) : MF_ALPHA_MIN;
 }
 
+/* Roughness conventions. Constructors take alpha, the slope scale of the
+ * distribution (GGX, Beckmann: alpha^2 = mean tan^2 of Beckmann normals).
+ * Perceptual roughness r (Burley 2012, Disney principled BRDF; glTF 2.0
+ * metallic-roughness, Filament, UE4) maps to alpha = r^2; Beckmann written
+ * with sigma, the standard deviation of the slope along one axis (a Gaussian
+ * height field, LEADR's per-axis variance sigma^2), has alpha = sqrt(2) sigma.
+ * Negative or NaN input gives 0 (which constructors clamp to their minimum). */
+MF_INLINE mf_real mf_alpha_from_roughness(mf_real r) { return r > MF_R(0.0) ? mf_min(r * r, MF_BIG) : MF_R(0.0); }
+MF_INLINE mf_real mf_roughness_from_alpha(mf_real alpha) { return alpha > MF_R(0.0) ? MF_SQRT(mf_min(alpha, MF_BIG)) : MF_R(0.0); }
+MF_INLINE mf_real mf_beckmann_alpha_from_sigma(mf_real sigma)
+{
+    return sigma > MF_R(0.0) ? mf_min(sigma * MF_R(1.41421356237309505), MF_BIG) : MF_R(0.0);
+}
+MF_INLINE mf_real mf_beckmann_sigma_from_alpha(mf_real alpha)
+{
+    return alpha > MF_R(0.0) ? mf_min(alpha, MF_BIG) * MF_R(0.70710678118654752) : MF_R(0.0);
+}
+
 /* An untransformed distribution of the given kind and (clamped) roughness,
  * its parameters zeroed for the constructor to fill. */
 MF_INLINE mf_ndf mf__ndf_init(int type, mf_real ax, mf_real ay)

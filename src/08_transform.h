@@ -49,6 +49,18 @@ MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
     return d;
 }
 
+/* d rotated by angle (radians, counterclockwise about the normal): the
+ * transform by the rotation R (thesis ch. 4; for a rotation M^-T = M), so
+ * D_rotated(m) = D(R^-1 m). Turns an anisotropic lobe, e.g. to follow a
+ * brushing direction, without rebuilding the frame. */
+MF_INLINE mf_ndf mf_rotated(mf_ndf d, mf_real angle)
+{
+    mf_real c, s;
+    if (!(angle == angle) || !(MF_FABS(angle) < MF_R(1e6))) return d;
+    c = MF_COS(angle); s = MF_SIN(angle);
+    return mf_transformed(d, mf_mat2_make(c, -s, s, c));
+}
+
 /* Stretch matrix M_s (Eq. 4.24): diag(1/(1-s), 1-s) for s in [0,1),
  * diag(1+s, 1/(1+s)) for s in (-1,0); det M_s = 1, M_s^-1 = M_-s (Eq. 4.25).
  * s is clamped to [-0.999, 0.999]. */

@@ -46,6 +46,18 @@ int main(void)
     s += mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo) + mf_erfinv(MF_R(0.3));
     s += mf_fresnel_dielectric(MF_R(0.5), MF_R(1.5)) + mf_fresnel_conductor(MF_R(0.5), MF_R(0.2), MF_R(3.0));
     s += mf_fresnel_schlick(MF_R(0.04), MF_R(0.5));
+    {   /* materials helpers */
+        mf_basis fb = mf_basis_from(wo, mf_vec3_make(MF_R(1.0), MF_R(0.0), MF_R(0.0))), fl = mf_basis_ltc(wo, wo);
+        mf_real ce, ck, cr, cg;
+        mf_ndf rot = mf_rotated(mf_ggx(MF_R(0.3), MF_R(0.1)), MF_R(0.5));
+        mf_conductor_from_artist(MF_R(0.9), MF_R(0.5), &ce, &ck);
+        mf_artist_from_conductor(ce, ck, &cr, &cg);
+        s += mf_to_local(&fb, wo).z + mf_to_world(&fl, wo).z + rot.ax + cr + cg;
+        s += mf_f0_from_ior(MF_R(1.5)) + mf_ior_from_f0(MF_R(0.04)) + mf_fresnel_schlick_f90(MF_R(0.04), MF_R(0.5), MF_R(0.5));
+        s += mf_fresnel_dielectric_average(MF_R(1.5)) + mf_fresnel_conductor_average(MF_R(0.2), MF_R(3.0));
+        s += mf_alpha_from_roughness(MF_R(0.5)) + mf_roughness_from_alpha(MF_R(0.25));
+        s += mf_beckmann_alpha_from_sigma(MF_R(0.2)) + mf_beckmann_sigma_from_alpha(MF_R(0.3));
+    }
     {
         mf_mat2 T;
         mf_vec3 tri[3];
