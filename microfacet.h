@@ -3,8 +3,8 @@
  *   00_intro.h 01_config.h 02_vec.h 03_fresnel.h 04_special.h 05_ndf.h
  *   06_kind_beckmann.h 06_kind_ggx.h 06_kind_gtr.h 06_kind_leadr.h
  *   06_kind_student_t.h 06_kind_tabulated.h 07_numeric_vndf.h 08_transform.h
- *   09_smith.h 10_sampling.h 11_brdf.h 12_leadr.h 13_ltc.h 14_ltc_table.h
- *   15_ibm.h 16_microsurface.h 99_outro.h
+ *   09_smith.h 10_sampling.h 11_brdf.h 11_dielectric.h 12_leadr.h 13_ltc.h
+ *   14_ltc_table.h 15_ibm.h 16_microsurface.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
  * Version 0.3.0.  MIT licensed (see the end of this file).
@@ -46,6 +46,7 @@
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
  *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
  *         sampling; Fresnel averages
+ *   == 11b. Rough dielectric BSDF (reflection and transmission), refraction
  *   == 12. LEADR slope moments: the linear type, deformation, height scaling,
  *          mean normal, covariance; moment mip maps
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
@@ -154,7 +155,9 @@
  *          (mf_alpha_from_roughness, mf_beckmann_alpha_from_sigma and
  *          inverses), Fresnel helpers (f0 and ior, Schlick with f90,
  *          Gulbrandsen's artist conductor, hemispherical averages), GGX
- *          bounded visible-normal sampling (Eto & Tokuyoshi 2023).
+ *          bounded visible-normal sampling (Eto & Tokuyoshi 2023). Rough
+ *          dielectric BSDF (Walter et al. 2007) for every kind, both sides,
+ *          eval / pdf / sample / weight, and mf_refract.
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
@@ -1780,6 +1783,159 @@ MF_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
 MF_COLD mf_real mf_fresnel_dielectric_average(mf_real eta);
 MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k);
 
+/* ======================================================================== */
+/* == 11b. Rough dielectric BSDF                                            */
+/* ======================================================================== */
+/* Walter et al. 2007 ("Microfacet Models for Refraction through Rough
+ * Surfaces") for every mf_ndf, transforms included. eta = index below the
+ * surface (-z) over the index above it (+z); wo and wi on either side:
+ * reflection when wo.z wi.z > 0, transmission otherwise. With eta_o the index
+ * on wo's side and e = eta_i / eta_o the relative index across:
+ *   reflection   f = F(wo.h) D(h) G2 / (4 |wo.z| |wi.z|),   h = normalize(wo + wi)  (Eq. 20)
+ *   transmission f = (1 - F(wo.h)) D(h) G2 |wi.h| |wo.h| / (|wi.z| |wo.z| (wi.h + wo.h / e)^2) / e^2
+ *                h = normalize(wo + e wi), facing wo's side  (Eqs. 16, 21)
+ * with G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) (the height-correlated form,
+ * each direction's masking on its own side). The 1 / e^2 = (eta_o / eta_i)^2
+ * factor is radiance transport: a path tracer following camera paths uses f
+ * as it is. Importance transport (light tracing, photon mapping) omits it:
+ * multiply the transmitted value by e^2. Reciprocity holds in the generalized
+ * form f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2.
+ * Sampling draws visible normals of wo's side (Heitz & d'Eon 2014), then
+ * reflection with probability F(wo.h) and refraction otherwise (so the weight
+ * f |cos| / pdf is G2 / G1(wo), times 1 / e^2 when transmitted).
+ * A wo below the surface is handled by inverting every direction (a height
+ * field seen from below, mirrored through the origin, has the same slope
+ * distribution, so this is exact for every kind, non-centered LEADR
+ * included) and using 1 / eta. At the smallest alpha (1e-4 after clamping)
+ * the lobes are nearly a mirror and a refraction: sampling is exact and the
+ * weights stay near F-free 1, but evaluating a fixed wi gives about 0 unless
+ * it is within ~alpha of the specular directions; a renderer wanting the
+ * delta limit uses mf_fresnel_dielectric with mf_reflect / mf_refract.
+ * Thin-walled sheets (two interfaces) are not modelled here. */
+
+/* Refraction of wi (pointing away, on n's side) through the unit normal n;
+ * eta = n_transmitted / n_incident (as mf_fresnel_dielectric). *wt: unit, on
+ * the other side. Returns 0 on total internal reflection or degenerate input
+ * (then *wt is the zero vector). Snell: sin t = sin i / eta. */
+MF_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
+{
+    mf_real ci = mf_dot(wi, n), s2t, ct;
+    *wt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(ci >= MF_R(0.0)) || !(ci <= MF_R(1.0) + MF_R(1e-3))) return 0;
+    ci = mf_min(ci, MF_R(1.0));
+    s2t = (MF_R(1.0) - ci * ci) / (eta * eta);
+    if (!(s2t < MF_R(1.0))) return 0;
+    ct = MF_SQRT(MF_R(1.0) - s2t);
+    *wt = mf_normalize(mf_add(mf_scale(wi, MF_R(-1.0) / eta), mf_scale(n, ci / eta - ct)));
+    return wt->z == wt->z && mf_dot(*wt, *wt) > MF_R(0.5);
+}
+
+/* wo above (after the inversion), e relative index across: the generalized
+ * half vector of (wo, wi) facing up, and 1 when the configuration is valid
+ * (wo and wi on the facet's correct sides). */
+MF_INLINE int mf__dielectric_half(mf_vec3 wo, mf_vec3 wi, mf_real e, mf_vec3 *h)
+{
+    mf_vec3 m = wi.z > MF_R(0.0) ? mf_add(wo, wi) : mf_add(wo, mf_scale(wi, e));
+    mf_real l2 = mf_dot(m, m);
+    if (!(l2 > MF_R(1e-30)) || !(l2 < MF_BIG)) return 0;
+    m = mf_scale(m, MF_R(1.0) / MF_SQRT(l2));
+    if (m.z < MF_R(0.0)) m = mf_scale(m, MF_R(-1.0));
+    *h = m;
+    if (!(mf_dot(m, wo) > MF_R(0.0))) return 0;
+    return wi.z > MF_R(0.0) ? mf_dot(m, wi) > MF_R(0.0) : mf_dot(m, wi) < MF_R(0.0);
+}
+
+/* Prepares (wo, wi, eta) for the evaluation: inverts both when wo is below;
+ * 0 when there is nothing to evaluate. */
+MF_INLINE int mf__dielectric_setup(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta)
+{
+    if (!(*eta > MF_R(0.0)) || !(*eta < MF_BIG)) return 0;
+    if (!(MF_FABS(wo->x) + MF_FABS(wo->y) + MF_FABS(wo->z) < MF_BIG) || !(MF_FABS(wi->x) + MF_FABS(wi->y) + MF_FABS(wi->z) < MF_BIG))
+        return 0;   /* NaN or infinite */
+    if (wo->z == MF_R(0.0) || wi->z == MF_R(0.0)) return 0;
+    if (wo->z < MF_R(0.0)) {
+        *wo = mf_scale(*wo, MF_R(-1.0));
+        *wi = mf_scale(*wi, MF_R(-1.0));
+        *eta = MF_R(1.0) / *eta;
+    }
+    return 1;
+}
+
+MF_INLINE mf_real mf__dielectric_G2(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+{
+    /* wi below: its masking on the lower side is Lambda(-wi) (see above) */
+    return MF_R(1.0) / (MF_R(1.0) + mf_lambda(d, wo) + mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi));
+}
+
+MF_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    mf_vec3 h;
+    mf_real F, D, oh, ih, den;
+    if (!mf__dielectric_setup(&wo, &wi, &eta) || !mf__dielectric_half(wo, wi, eta, &h)) return MF_R(0.0);
+    oh = mf_dot(wo, h);
+    F = mf_fresnel_dielectric(oh, eta);
+    D = mf_D(d, h);
+    if (wi.z > MF_R(0.0))
+        return mf_min(F * D * mf__dielectric_G2(d, wo, wi) / (MF_R(4.0) * wo.z) / wi.z, MF_BIG);
+    ih = mf_dot(wi, h);
+    den = ih + oh / eta;
+    den = den * den * wo.z * -wi.z;
+    if (!(den > MF_R(0.0))) return MF_R(0.0);
+    return mf_min((MF_R(1.0) - F) * D * mf__dielectric_G2(d, wo, wi) * MF_FABS(ih) * oh / den / (eta * eta), MF_BIG);
+}
+
+/* Density of mf_dielectric_sample per unit solid angle of wi (either side). */
+MF_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    mf_vec3 h;
+    mf_real F, oh, ih, den, dv;
+    if (!mf__dielectric_setup(&wo, &wi, &eta) || !mf__dielectric_half(wo, wi, eta, &h)) return MF_R(0.0);
+    oh = mf_dot(wo, h);
+    F = mf_fresnel_dielectric(oh, eta);
+    dv = mf_D_visible(d, wo, h);
+    if (wi.z > MF_R(0.0)) return mf_min(F * dv / (MF_R(4.0) * oh), MF_BIG);
+    ih = mf_dot(wi, h);
+    den = ih + oh / eta;
+    den = den * den;
+    if (!(den > MF_R(0.0))) return MF_R(0.0);
+    return mf_min((MF_R(1.0) - F) * dv * MF_FABS(ih) / den, MF_BIG);   /* Jacobian |wi.h| / (wi.h + wo.h / e)^2 (Eq. 17) */
+}
+
+/* Samples wi (reflected or transmitted) for wo on either side from three
+ * uniform numbers; the zero vector means no sample. */
+MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
+{
+    mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    mf_real s = MF_R(1.0), F;
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(MF_FABS(wo.x) + MF_FABS(wo.y) + MF_FABS(wo.z) < MF_BIG) || wo.z == MF_R(0.0))
+        return zero;
+    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; s = MF_R(-1.0); }
+    m = mf_sample_visible(d, wo, u1, u2);
+    if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return zero;
+    F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
+    if (u3 < F) {
+        wi = mf_reflect(wo, m);
+        if (!(wi.z > MF_R(0.0))) return zero;
+    } else {
+        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return zero;
+    }
+    return mf_scale(wi, s);
+}
+
+/* f |wi.z| / pdf for a wi from mf_dielectric_sample: G2 / G1(wo) = (1 +
+ * Lambda(wo)) G2, divided by e^2 when transmitted (radiance transport);
+ * for LEADR moments (a tilted mean surface) the ratio itself. */
+MF_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    mf_real w;
+    if (d->type == MF_NDF_LEADR) {   /* visible normals of a tilted mean surface: the ratio itself */
+        w = mf_dielectric_pdf(d, wo, wi, eta);
+        return w > MF_R(0.0) ? mf_min(mf_dielectric_bsdf(d, wo, wi, eta) * MF_FABS(wi.z) / w, MF_BIG) : MF_R(0.0);
+    }
+    if (!mf__dielectric_setup(&wo, &wi, &eta)) return MF_R(0.0);
+    w = (MF_R(1.0) + mf_lambda(d, wo)) * mf__dielectric_G2(d, wo, wi);
+    return wi.z > MF_R(0.0) ? w : w / (eta * eta);
+}
 #ifndef MF_NO_LEADR
 /* ======================================================================== */
 /* == 12. LEADR slope moments                                               */

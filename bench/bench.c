@@ -17,7 +17,7 @@
 #define N 4096
 #define REPS 7
 
-static mf_vec3 g_wo[N], g_wi[N], g_wm[N];
+static mf_vec3 g_wo[N], g_wi[N], g_wm[N], g_wt[N];
 static mf_real g_u1[N], g_u2[N];
 static volatile double g_sink;
 
@@ -421,6 +421,38 @@ static double b_brdf_sample(const mf_ndf *d)
     }
     return s;
 }
+/* Rough dielectric, GGX only, written plainly from Walter et al. 2007 (wo
+ * above, eta 1.5): the baseline of mf_dielectric_bsdf */
+static mf_real plain_walter_ggx(mf_real ax, mf_real ay, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    int refl = wi.z > 0;
+    mf_vec3 h = refl ? mf_add(wo, wi) : mf_add(wo, mf_scale(wi, eta));
+    mf_real l = MF_SQRT(mf_dot(h, h)), oh, ih, F, G, D, den;
+    if (!(l > 0)) return 0;
+    h = mf_scale(h, (h.z < 0 ? -1 : 1) / l);
+    oh = mf_dot(wo, h); ih = mf_dot(wi, h);
+    if (oh <= 0 || (refl ? ih <= 0 : ih >= 0)) return 0;
+    F = mf_fresnel_dielectric(oh, eta);
+    D = plain_ggx_D(ax, ay, h);
+    G = MF_R(1.0) / (MF_R(1.0) + plain_ggx_lambda(ax, ay, wo) + plain_ggx_lambda(ax, ay, mf_vec3_make(wi.x, wi.y, MF_FABS(wi.z))));
+    if (refl) return F * D * G / (4 * wo.z * wi.z);
+    den = ih + oh / eta;
+    return (1 - F) * D * G * MF_FABS(ih) * oh / (den * den * wo.z * -wi.z) / (eta * eta);
+}
+static double b_walter_plain(const mf_ndf *d) { LOOP(plain_walter_ggx(d->ax, d->ay, g_wo[i], g_wt[i], MF_R(1.5))); }
+static double b_dielectric(const mf_ndf *d) { LOOP(mf_dielectric_bsdf(d, g_wo[i], g_wt[i], MF_R(1.5))); }
+static double b_dielectric_pdf(const mf_ndf *d) { LOOP(mf_dielectric_pdf(d, g_wo[i], g_wt[i], MF_R(1.5))); }
+static double b_dielectric_sample(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_vec3 wi = mf_dielectric_sample(d, g_wo[i], MF_R(1.5), g_u1[i], g_u2[i], g_u1[(i + 7) % N]);
+        s += (double)wi.z + (double)mf_dielectric_sample_weight(d, g_wo[i], wi, MF_R(1.5));
+    }
+    return s;
+}
+
 /* sample, reflect, pdf: plain VNDF and bounded VNDF (the same work) */
 static double b_vndf_pdf(const mf_ndf *d)
 {
@@ -459,6 +491,7 @@ int main(void)
         g_wo[i] = rnd_dir(MF_R(1.5));
         g_wi[i] = rnd_dir(MF_R(1.5));
         g_wm[i] = mf_normalize(mf_add(g_wo[i], g_wi[i]));
+        g_wt[i] = i % 2 ? g_wi[i] : mf_vec3_make(g_wi[i].x, g_wi[i].y, -g_wi[i].z);   /* half transmitted */
         g_u1[i] = rnd();
         g_u2[i] = rnd();
     }
@@ -499,6 +532,13 @@ int main(void)
         run_pair(b_vndf_pdf, b_bounded_pdf, g, &base, &ours);
         printf("bench ggx_vndf_sample_pdf_baseline %.2f\n", base);
         printf("bench ggx_bounded_vndf_sample_pdf %.2f ratio=%.3f\n", ours, ours / base);
+        run_pair(b_walter_plain, b_dielectric, g, &base, &ours);
+        printf("bench ggx_dielectric_walter_plain_baseline %.2f\n", base);
+        printf("bench ggx_dielectric_bsdf %.2f ratio=%.3f\n", ours, ours / base);
+        run_pair(b_walter_plain, b_dielectric_pdf, g, &base, &ours);
+        printf("bench ggx_dielectric_pdf %.2f ratio_to_walter_plain_eval=%.3f\n", ours, ours / base);
+        run_pair(b_walter_plain, b_dielectric_sample, g, &base, &ours);
+        printf("bench ggx_dielectric_sample_and_weight %.2f ratio_to_walter_plain_eval=%.3f\n", ours, ours / base);
     }
     for (k = 0; k < 5; ++k) {
         const mf_ndf *d = &ks[k].d;

@@ -38,6 +38,7 @@
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
  *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
  *         sampling; Fresnel averages
+ *   == 11b. Rough dielectric BSDF (reflection and transmission), refraction
  *   == 12. LEADR slope moments: the linear type, deformation, height scaling,
  *          mean normal, covariance; moment mip maps
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
@@ -146,5 +147,7 @@
  *          (mf_alpha_from_roughness, mf_beckmann_alpha_from_sigma and
  *          inverses), Fresnel helpers (f0 and ior, Schlick with f90,
  *          Gulbrandsen's artist conductor, hemispherical averages), GGX
- *          bounded visible-normal sampling (Eto & Tokuyoshi 2023).
+ *          bounded visible-normal sampling (Eto & Tokuyoshi 2023). Rough
+ *          dielectric BSDF (Walter et al. 2007) for every kind, both sides,
+ *          eval / pdf / sample / weight, and mf_refract.
  */

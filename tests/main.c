@@ -186,6 +186,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_ibm);
     MFT_RUN(test_microsurface);
     MFT_RUN(test_materials);
+    MFT_RUN(test_dielectric);
     MFT_RUN(test_robust);
     MFT_RUN(test_float);
     MFT_RUN(test_tu2);

@@ -73,6 +73,7 @@ void test_tabulated(void);
 void test_ibm(void);
 void test_microsurface(void);
 void test_materials(void);
+void test_dielectric(void);
 
 /* The same inline and cold-path computations, compiled in each unit that
  * calls them: test_tu2 compares its own with those of tests/main.c. The

@@ -42,6 +42,8 @@ int main(void)
         s += mf_D_visible(d, wo, wm) + wd.z + ws.z + mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi);
         s += mf_brdf_sample_weight(d, wo, wi) + mf_projected_area(d, wo) + mf_ggx_brdf_pdf_bounded(d, wo, wi);
         s += mf_ggx_sample_visible_bounded(d, wo, MF_R(0.3), MF_R(0.6)).z;
+        s += mf_dielectric_bsdf(d, wo, wi, MF_R(1.5)) + mf_dielectric_pdf(d, wo, wi, MF_R(1.5));
+        s += mf_dielectric_sample(d, wo, MF_R(1.5), MF_R(0.2), MF_R(0.7), MF_R(0.5)).z + mf_dielectric_sample_weight(d, wo, wi, MF_R(1.5));
     }
     s += mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo) + mf_erfinv(MF_R(0.3));
     s += mf_fresnel_dielectric(MF_R(0.5), MF_R(1.5)) + mf_fresnel_conductor(MF_R(0.5), MF_R(0.2), MF_R(3.0));
@@ -56,6 +58,10 @@ int main(void)
         s += mf_f0_from_ior(MF_R(1.5)) + mf_ior_from_f0(MF_R(0.04)) + mf_fresnel_schlick_f90(MF_R(0.04), MF_R(0.5), MF_R(0.5));
         s += mf_fresnel_dielectric_average(MF_R(1.5)) + mf_fresnel_conductor_average(MF_R(0.2), MF_R(3.0));
         s += mf_alpha_from_roughness(MF_R(0.5)) + mf_roughness_from_alpha(MF_R(0.25));
+        {
+            mf_vec3 wt;
+            s += (mf_real)mf_refract(wo, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), MF_R(1.5), &wt) + wt.z;
+        }
         s += mf_beckmann_alpha_from_sigma(MF_R(0.2)) + mf_beckmann_sigma_from_alpha(MF_R(0.3));
     }
     {
