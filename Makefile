@@ -24,10 +24,13 @@ EXR_CFLAGS := $(shell pkg-config --cflags OpenEXR)
 EXR_LIBS   := $(shell pkg-config --libs OpenEXR)
 EXR_DEFS   := -DMF_EXAMPLE_EXR $(EXR_CFLAGS)
 EXR_HDR    := tools/exr_io.h
+EXR_STEPS  := exr_float exr_double
+else
+EXR_STEPS  := exr_skip
 endif
 
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check config-check package-check ltc-table $(foreach s,header warnings config package readme examples quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
+        header header-check config-check package-check ltc-table tools $(foreach s,header warnings config package readme examples exr_float exr_double exr_skip quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
 
@@ -119,7 +122,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header c_double c_float warnings config package readme examples cpp_double cpp_float
+TEST_STEPS := header c_double c_float warnings config package readme examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -129,6 +132,33 @@ step-warnings: | $(RES)
 	@$(RUN_STEP) warnings $(RES)/warnings check sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
 step-examples: | $(RES)
 	@$(RUN_STEP) examples $(RES)/examples tests sh tests/examples_check.sh "$(CC)" "$(WARN)" $(BUILD) "$(EXR_DEFS)" "$(EXR_LIBS)"
+# OpenEXR inputs read into the IBM and LEADR builders (tests/exr_check.c),
+# float and double; one line saying it was skipped when OpenEXR is absent
+ifeq ($(HAVE_EXR),yes)
+$(BUILD)/exr_check_float: tests/exr_check.c tools/exr_io.h tools/ibm_exr.h microfacet.h | $(BUILD)
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O2 $(TWARN) -I. $(EXR_CFLAGS) $< -o $@ $(EXR_LIBS) -lm
+$(BUILD)/exr_check_double: tests/exr_check.c tools/exr_io.h tools/ibm_exr.h microfacet.h | $(BUILD)
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O2 $(TWARN) -DMF_USE_DOUBLE -I. $(EXR_CFLAGS) $< -o $@ $(EXR_LIBS) -lm
+$(BUILD)/ibm_from_exr: tools/ibm_from_exr.c tools/exr_io.h tools/ibm_exr.h microfacet.h | $(BUILD)
+	@echo "  CC      $@"
+	$(Q)$(CC) -std=c99 -O2 $(WARN) -I. $(EXR_CFLAGS) $< -o $@ $(EXR_LIBS) -lm
+step-exr_float: $(BUILD)/exr_check_float | $(RES)
+	@mkdir -p $(BUILD)/exr_float
+	@$(RUN_STEP) exr_float $(RES)/exr_float tests ./$< $(BUILD)/exr_float
+step-exr_double: $(BUILD)/exr_check_double | $(RES)
+	@mkdir -p $(BUILD)/exr_double
+	@$(RUN_STEP) exr_double $(RES)/exr_double tests ./$< $(BUILD)/exr_double
+tools: $(BUILD)/ibm_from_exr
+	@echo "tools: $(BUILD)/ibm_from_exr (an IBM file from an EXR normal map)"
+else
+step-exr_skip: | $(RES)
+	@echo "[exr] EXR skipped: OpenEXR not found (apt-get install libopenexr-dev), or EXR=no"
+	@echo "0 0" > $(RES)/exr_skip
+tools:
+	@echo "tools: EXR skipped: OpenEXR not found (apt-get install libopenexr-dev), or EXR=no; nothing to build"
+endif
 step-readme: | $(RES)
 	@$(RUN_STEP) readme $(RES)/readme check sh tests/readme_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 step-package: | $(RES)
