@@ -83,38 +83,39 @@ MF_INLINE mf_real mf__dielectric_G2(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     return MF_R(1.0) / (MF_R(1.0) + mf_lambda(d, wo) + mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi));
 }
 
+/* The common part of eval and pdf: after the setup, the half vector h, wo.h,
+ * the Fresnel reflectance there and, for transmission, the Jacobian's
+ * denominator (wi.h + wo.h / e)^2 (Walter Eq. 17). 0 when nothing to do. */
+MF_INLINE int mf__dielectric_prep(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta, mf_vec3 *h, mf_real *oh, mf_real *F, mf_real *den)
+{
+    mf_real x;
+    if (!mf__dielectric_setup(wo, wi, eta) || !mf__dielectric_half(*wo, *wi, *eta, h)) return 0;
+    *oh = mf_dot(*wo, *h);
+    *F = mf_fresnel_dielectric(*oh, *eta);
+    x = mf_dot(*wi, *h) + *oh / *eta;
+    *den = x * x;
+    return wi->z > MF_R(0.0) || *den > MF_R(0.0);
+}
+
 MF_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_vec3 h;
-    mf_real F, D, oh, ih, den;
-    if (!mf__dielectric_setup(&wo, &wi, &eta) || !mf__dielectric_half(wo, wi, eta, &h)) return MF_R(0.0);
-    oh = mf_dot(wo, h);
-    F = mf_fresnel_dielectric(oh, eta);
-    D = mf_D(d, h);
-    if (wi.z > MF_R(0.0))
-        return mf_min(F * D * mf__dielectric_G2(d, wo, wi) / (MF_R(4.0) * wo.z) / wi.z, MF_BIG);
-    ih = mf_dot(wi, h);
-    den = ih + oh / eta;
-    den = den * den * wo.z * -wi.z;
-    if (!(den > MF_R(0.0))) return MF_R(0.0);
-    return mf_min((MF_R(1.0) - F) * D * mf__dielectric_G2(d, wo, wi) * MF_FABS(ih) * oh / den / (eta * eta), MF_BIG);
+    mf_real F, oh, den, g;
+    if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return MF_R(0.0);
+    g = mf_D(d, h) * mf__dielectric_G2(d, wo, wi) / wo.z;
+    if (wi.z > MF_R(0.0)) return mf_min(F * g / (MF_R(4.0) * wi.z), MF_BIG);
+    return mf_min((MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z) / (eta * eta), MF_BIG);
 }
 
 /* Density of mf_dielectric_sample per unit solid angle of wi (either side). */
 MF_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_vec3 h;
-    mf_real F, oh, ih, den, dv;
-    if (!mf__dielectric_setup(&wo, &wi, &eta) || !mf__dielectric_half(wo, wi, eta, &h)) return MF_R(0.0);
-    oh = mf_dot(wo, h);
-    F = mf_fresnel_dielectric(oh, eta);
+    mf_real F, oh, den, dv;
+    if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return MF_R(0.0);
     dv = mf_D_visible(d, wo, h);
     if (wi.z > MF_R(0.0)) return mf_min(F * dv / (MF_R(4.0) * oh), MF_BIG);
-    ih = mf_dot(wi, h);
-    den = ih + oh / eta;
-    den = den * den;
-    if (!(den > MF_R(0.0))) return MF_R(0.0);
-    return mf_min((MF_R(1.0) - F) * dv * MF_FABS(ih) / den, MF_BIG);   /* Jacobian |wi.h| / (wi.h + wo.h / e)^2 (Eq. 17) */
+    return mf_min((MF_R(1.0) - F) * dv * MF_FABS(mf_dot(wi, h)) / den, MF_BIG);   /* Jacobian |wi.h| / (wi.h + wo.h / e)^2 */
 }
 
 /* Samples wi (reflected or transmitted) for wo on either side from three
