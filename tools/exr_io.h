@@ -18,11 +18,17 @@
 #include <openexr.h>
 
 /* Upper bound on texels accepted by the reader (guards against absurd headers). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MFX__EXR_FN static __attribute__((unused))
+#else
+#define MFX__EXR_FN static
+#endif
+
 #ifndef MFX_EXR_MAX_TEXELS
 #define MFX_EXR_MAX_TEXELS ((int64_t)1 << 28)
 #endif
 
-static int mfx__exr_fail(const char *path, const char *what, exr_result_t rv)
+MFX__EXR_FN int mfx__exr_fail(const char *path, const char *what, exr_result_t rv)
 {
     if (rv != EXR_ERR_SUCCESS)
         fprintf(stderr, "exr: %s: %s (%s)\n", path ? path : "(null)", what, exr_get_default_error_message(rv));
@@ -32,12 +38,12 @@ static int mfx__exr_fail(const char *path, const char *what, exr_result_t rv)
 }
 
 /* Silences the library's own reporting; our messages name the failing step. */
-static void mfx__exr_quiet(exr_const_context_t ctxt, exr_result_t code, const char *msg)
+MFX__EXR_FN void mfx__exr_quiet(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
     (void)ctxt; (void)code; (void)msg;
 }
 
-static int mfx_exr_write(const char *path, const float *pixels, int width, int height, int channels, int half)
+MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, int height, int channels, int half)
 {
     static const char *names1[] = { "Y" }, *names4[] = { "R", "G", "B", "A" };
     const char **names = channels == 1 ? names1 : names4;
@@ -98,7 +104,7 @@ done:
     return err;
 }
 
-static int mfx_exr_read(const char *path, float **pixels, int *width, int *height, int *channels)
+MFX__EXR_FN int mfx_exr_read(const char *path, float **pixels, int *width, int *height, int *channels)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     exr_context_t ctx = NULL;
@@ -111,7 +117,7 @@ static int mfx_exr_read(const char *path, float **pixels, int *width, int *heigh
     int64_t w64, h64;
     int w = 0, h = 0, nch = 0, lines = 0, started = 0, y, i, c, have[5] = { 0, 0, 0, 0, 0 };
     static const char *names[5] = { "R", "G", "B", "A", "Y" };
-    float *out = NULL;
+    float *out = NULL, *plane = NULL;
     const char *what = NULL;
 
     if (pixels) *pixels = NULL;
@@ -147,11 +153,17 @@ static int mfx_exr_read(const char *path, float **pixels, int *width, int *heigh
     out = (float *)calloc((size_t)w * (size_t)h * (size_t)nch, sizeof(float));
     if (!out) { what = "out of memory"; goto done; }
     MFX__TRY(exr_get_scanlines_per_chunk(ctx, 0, &lines), "scanlines per chunk");
-    if (lines < 1) { what = "bad chunk height"; goto done; }
+    if (lines < 1 || lines > 4096) { what = "bad chunk height"; goto done; }
+    if (lines > h) lines = h;
+    /* Decoded planar, one chunk at a time, then interleaved here: OpenEXR 3.1's
+     * interleaving fast path for 4 half channels ignores the per-channel
+     * pointers and stores the file's (alphabetical) order, A,B,G,R. */
+    plane = (float *)malloc((size_t)w * (size_t)lines * (size_t)nch * sizeof(float));
+    if (!plane) { what = "out of memory"; goto done; }
     for (y = dw.min.y; y <= dw.max.y; y += lines) {
         MFX__TRY(exr_read_scanline_chunk_info(ctx, 0, y, &cinfo), "chunk info");
         if (cinfo.start_y < dw.min.y || cinfo.height < 1 || cinfo.width != w ||
-            (int64_t)cinfo.start_y + cinfo.height - 1 > dw.max.y) {
+            cinfo.height > lines || (int64_t)cinfo.start_y + cinfo.height - 1 > dw.max.y) {
             what = "inconsistent chunk"; goto done;
         }
         if (!started) {
@@ -168,17 +180,24 @@ static int mfx_exr_read(const char *path, float **pixels, int *width, int *heigh
             if (slot < 0) { ch->decode_to_ptr = NULL; continue; }  /* skipped */
             ch->user_data_type = EXR_PIXEL_FLOAT;
             ch->user_bytes_per_element = 4;
-            ch->user_pixel_stride = 4 * nch;
-            ch->user_line_stride = 4 * nch * w;
-            ch->decode_to_ptr = (uint8_t *)(out + ((size_t)(cinfo.start_y - dw.min.y) * (size_t)w) * nch + slot);
+            ch->user_pixel_stride = 4;
+            ch->user_line_stride = 4 * w;
+            ch->decode_to_ptr = (uint8_t *)(plane + (size_t)slot * (size_t)w * (size_t)lines);
         }
         MFX__TRY(exr_decoding_choose_default_routines(ctx, 0, &dec), "decoder routines");
         MFX__TRY(exr_decoding_run(ctx, 0, &dec), "decode");
+        for (c = 0; c < nch; ++c) {
+            const float *src = plane + (size_t)c * (size_t)w * (size_t)lines;
+            float *dst = out + (size_t)(cinfo.start_y - dw.min.y) * (size_t)w * (size_t)nch + (size_t)c;
+            size_t k, n = (size_t)w * (size_t)cinfo.height;
+            for (k = 0; k < n; ++k) dst[k * (size_t)nch] = src[k];
+        }
     }
 #undef MFX__TRY
 done:
     if (started) exr_decoding_destroy(ctx, &dec);
     exr_finish(&ctx);
+    free(plane);
     if (what) {
         free(out);
         return mfx__exr_fail(path, what, rv);

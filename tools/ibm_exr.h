@@ -7,7 +7,7 @@
  * pixels of nch >= 3 channels: RGB = xyz in [-1,1], or in [0,1] mapped by
  * 2c - 1 when encoded. A NaN, infinite or zero-length normal gives
  * MF_ERROR_INVALID_DATA; nothing stays allocated on failure. */
-static mf_result mfx_normals_from_rgb(const float *px, int w, int h, int nch, int encoded, mf_real **out)
+MFX__EXR_FN mf_result mfx_normals_from_rgb(const float *px, int w, int h, int nch, int encoded, mf_real **out)
 {
     size_t n, i;
     mf_real *nrm;
@@ -35,7 +35,7 @@ static mf_result mfx_normals_from_rgb(const float *px, int w, int h, int nch, in
 /* Reads an EXR normal map (mfx_exr_read) and builds its IBM (mf_ibm_build).
  * An unreadable file or one without RGB gives MF_ERROR_INVALID_DATA (the
  * reason is on stderr). */
-static mf_result mfx_ibm_from_exr(mf_ibm *ibm, const char *path, int encoded, mf_real flake_alpha)
+MFX__EXR_FN mf_result mfx_ibm_from_exr(mf_ibm *ibm, const char *path, int encoded, mf_real flake_alpha)
 {
     float *px = NULL;
     mf_real *nrm = NULL;
