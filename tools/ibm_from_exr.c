@@ -58,7 +58,10 @@ int main(int argc, char **argv)
         float *px = NULL; int w, h, c;
         mf_real *nrm = NULL;
         if (mfx_exr_read(in, &px, &w, &h, &c) == 0 && mfx_normals_from_rgb(px, w, h, c, encoded, &nrm) == MF_SUCCESS) {
-            size_t k, n = (size_t)w * (size_t)h;
+            size_t k, n = (size_t)w * (size_t)h, neg = 0;
+            for (k = 0; k < n * (size_t)c; ++k) neg += px[k] < 0.0f;
+            if (!encoded && neg == 0)
+                fprintf(stderr, "ibm_from_exr: note: no negative component in %s; if it is stored in [0,1], pass --encoded\n", in);
             for (k = 0; k < n; ++k) {
                 int b = mf_ibm_bin_of(&ibm, mf_vec3_make(nrm[3 * k], nrm[3 * k + 1], nrm[3 * k + 2]));
                 if (b >= 0 && b < nb && !mark[b]) { mark[b] = 1; ++used; }
