@@ -43,7 +43,10 @@ MFX__EXR_FN void mfx__exr_quiet(exr_const_context_t ctxt, exr_result_t code, con
     (void)ctxt; (void)code; (void)msg;
 }
 
-MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, int height, int channels, int half)
+/* mfx_exr_write with the data window's top-left corner at (x0, y0) (display
+ * window the same box). */
+MFX__EXR_FN int mfx_exr_write_at(const char *path, const float *pixels, int width, int height, int channels, int half,
+                                 int x0, int y0)
 {
     static const char *names1[] = { "Y" }, *names4[] = { "R", "G", "B", "A" };
     const char **names = channels == 1 ? names1 : names4;
@@ -56,7 +59,8 @@ MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, 
     const char *what = NULL;
 
     if (!path || !pixels || width < 1 || height < 1 || !(channels == 1 || channels == 3 || channels == 4) ||
-        (int64_t)width * height > MFX_EXR_MAX_TEXELS)
+        (int64_t)width * height > MFX_EXR_MAX_TEXELS || (int64_t)x0 + width - 1 > INT32_MAX ||
+        (int64_t)y0 + height - 1 > INT32_MAX)
         return mfx__exr_fail(path, "invalid arguments", EXR_ERR_SUCCESS);
     memset(&enc, 0, sizeof enc);
     init.error_handler_fn = mfx__exr_quiet;
@@ -64,7 +68,14 @@ MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, 
     if (rv != EXR_ERR_SUCCESS) return mfx__exr_fail(path, "cannot open for writing", rv);
 #define MFX__TRY(call, msg) do { rv = (call); if (rv != EXR_ERR_SUCCESS) { what = (msg); goto done; } } while (0)
     MFX__TRY(exr_add_part(ctx, "main", EXR_STORAGE_SCANLINE, &part), "add part");
-    MFX__TRY(exr_initialize_required_attr_simple(ctx, part, width, height, EXR_COMPRESSION_ZIP), "header");
+    {
+        exr_attr_box2i_t box;
+        exr_attr_v2f_t center;
+        memset(&center, 0, sizeof center);
+        box.min.x = x0; box.min.y = y0; box.max.x = x0 + width - 1; box.max.y = y0 + height - 1;
+        MFX__TRY(exr_initialize_required_attr(ctx, part, &box, &box, 1.0f, &center, 1.0f, EXR_LINEORDER_INCREASING_Y,
+                                              EXR_COMPRESSION_ZIP), "header");
+    }
     for (c = 0; c < channels; ++c)
         MFX__TRY(exr_add_channel(ctx, part, names[c], half ? EXR_PIXEL_HALF : EXR_PIXEL_FLOAT,
                                  EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1), "add channel");
@@ -73,7 +84,8 @@ MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, 
     if (lines < 1) { what = "bad chunk height"; goto done; }
     for (y = 0; y < height; y += lines) {
         int i;
-        MFX__TRY(exr_write_scanline_chunk_info(ctx, part, y, &cinfo), "chunk info");
+        MFX__TRY(exr_write_scanline_chunk_info(ctx, part, y0 + y, &cinfo), "chunk info");
+        if (cinfo.start_y != y0 + y) { what = "unexpected chunk start"; goto done; }
         if (!started) {
             MFX__TRY(exr_encoding_initialize(ctx, part, &cinfo, &enc), "encoder init");
             started = 1;
@@ -91,7 +103,7 @@ MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, 
             ch->user_bytes_per_element = 4;
             ch->user_pixel_stride = 4 * channels;
             ch->user_line_stride = 4 * channels * width;
-            ch->encode_from_ptr = (const uint8_t *)(pixels + ((size_t)cinfo.start_y * width) * channels + slot);
+            ch->encode_from_ptr = (const uint8_t *)(pixels + ((size_t)y * width) * channels + slot);
         }
         MFX__TRY(exr_encoding_choose_default_routines(ctx, part, &enc), "encoder routines");
         MFX__TRY(exr_encoding_run(ctx, part, &enc), "encode");
@@ -102,6 +114,11 @@ done:
     rv = exr_finish(&ctx);
     if (!err && rv != EXR_ERR_SUCCESS) err = mfx__exr_fail(path, "finish", rv);
     return err;
+}
+
+MFX__EXR_FN int mfx_exr_write(const char *path, const float *pixels, int width, int height, int channels, int half)
+{
+    return mfx_exr_write_at(path, pixels, width, height, channels, half, 0, 0);
 }
 
 MFX__EXR_FN int mfx_exr_read(const char *path, float **pixels, int *width, int *height, int *channels)
