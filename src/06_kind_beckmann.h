@@ -86,7 +86,10 @@ MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_
     mf_real lo = MF_R(-12.0), hi = mu, x, target;
     int i;
     *sy = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
-    if (!(tv > MF_EPS)) { *sx = mf_erfinv(MF_R(2.0) * u - MF_R(1.0)); return; }   /* x(tv) = x(0) + O(tv) */
+    if (!(tv > MF_EPS) && MF_FABS(u - MF_R(0.5)) < MF_R(0.4999)) {   /* x(tv) = x(0) + O(tv) */
+        *sx = mf_erfinv(MF_R(2.0) * u - MF_R(1.0));
+        return;
+    }
     x = mf__erfinv_giles(mf_clamp(MF_R(2.0) * u - MF_R(1.0), MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS));
     x = (MF_R(1.0) - w) * x - w * MF_SQRT(-MF_LOG(mf_max(u, MF_R(1e-30))));
     if (tv > MF_R(1.0) / MF_R(6.0)) {   /* else G(mu) = 1 to double precision */
