@@ -2763,6 +2763,16 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
  * quantiles of the two limits, erfinv(2u - 1) at tv = 0 and -sqrt(-log u) as
  * tv -> infinity (where G ~ exp(-x^2)); past the top 1/tv it uses the
  * quadratic tail G(1/tv) - G(x) ~ tv exp(-1/tv^2) (1/tv - x)^2 / (2 sqrt(pi)). */
+/* Halley converges cubically: after a step s the error is O(s^3) (times
+ * 1 / (1/tv - x)^2 near the top, hence the tolerance relative to that gap), so
+ * a step below eps^(1/3) / 5 is the last one. */
+#ifndef MF__HALLEY_TOL
+#ifdef MF_USE_DOUBLE
+#define MF__HALLEY_TOL MF_R(1e-6)
+#else
+#define MF__HALLEY_TOL MF_R(1e-3)
+#endif
+#endif
 MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_real *sx, mf_real *sy)
 {
     const mf_real k = MF_R(0.28209479177387814);   /* 1 / (2 sqrt(pi)) */
@@ -2791,7 +2801,7 @@ MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_
         /* Halley: f / (f' - f f'' / (2 f')), with f''/f' = -2x - tv / (1 - tv x);
          * a non-positive effective slope falls back to bisection */
         df *= MF_R(1.0) + MF_R(0.5) * r * (MF_R(2.0) * x + tv / mf_max(s, MF_R(1e-30)));
-        if (mf__newton_step(&x, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + MF_FABS(x)))) break;
+        if (mf__newton_step(&x, f, df, &lo, &hi, MF__HALLEY_TOL * mf_min(MF_R(1.0) + MF_FABS(x), mu - x))) break;
     }
     *sx = x;
 }
