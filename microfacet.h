@@ -774,11 +774,9 @@ MF_INLINE mf_real mf__log1p_over_x(mf_real x)
 
 /* Inverse of erf on (-1, 1): Giles' single-precision approximation (2010),
  * polished by Newton steps on erf/erfc. Finite for every input (clamped). */
-MF_INLINE mf_real mf_erfinv(mf_real y)
+MF_INLINE mf_real mf__erfinv_giles(mf_real y)
 {
-    mf_real w, p, x;
-    int i;
-    y = mf_clamp(y, MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS);
+    mf_real w, p;
     w = -MF_LOG((MF_R(1.0) - y) * (MF_R(1.0) + y));
     if (w < MF_R(5.0)) {
         w = w - MF_R(2.5);
@@ -803,7 +801,14 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
         p = MF_R(1.00167406) + p * w;
         p = MF_R(2.83297682) + p * w;
     }
-    x = p * y;
+    return p * y;
+}
+MF_INLINE mf_real mf_erfinv(mf_real y)
+{
+    mf_real x;
+    int i;
+    y = mf_clamp(y, MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS);
+    x = mf__erfinv_giles(y);
 #ifdef MF_USE_DOUBLE
     for (i = 0; i < 2; ++i) { /* Newton on the tail-accurate side */
         mf_real r = x >= 0.0 ? (1.0 - y) - MF_ERFC(x) : MF_ERFC(-x) - (1.0 + y); /* erf(x) - y */
@@ -1008,7 +1013,7 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
  * (thesis Eq. C.1; Heitz 2014 Eq. 83); exact Lambda (Heitz 2014 Eq. 84) and
  * Walter et al. 2007's rational approximation (thesis C.2); NDF sampling by
  * the inverse slope CDF; visible normals by slope-space inversion (Heitz &
- * d'Eon 2014, Jakob 2014) with a safeguarded Newton solve (cold). */
+ * d'Eon 2014, Jakob 2014) with a safeguarded Halley solve (cold). */
 /* Anisotropic Beckmann. alpha = sqrt(2) sigma of the Gaussian slopes. */
 MF_INLINE mf_ndf mf_beckmann(mf_real alpha_x, mf_real alpha_y)
 {
@@ -3120,24 +3125,53 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
 #undef MF__NDF_CASE_SAMPLE_VISIBLE
 /* Beckmann visible slopes for unit roughness and view tan(theta) = tv (view
  * along +x): the slope x along the view has density ~ max(0, 1 - tv x) exp(-x^2),
- * CDF F(x) = [erfc(-x)/2 + tv exp(-x^2)/(2 sqrt(pi))] / (1 + tv); y ~ N(0, 1/2). */
+ * G(x) = erfc(-x)/2 + tv exp(-x^2)/(2 sqrt(pi)) (Heitz & d'Eon 2014 Eq. 9 up to
+ * the factor 1 + tv) is solved for G(x) = u1 G(1/tv) by safeguarded Halley
+ * steps sharing one erfc and one exp; y ~ N(0, 1/2). The start blends the
+ * quantiles of the two limits, erfinv(2u - 1) at tv = 0 and -sqrt(-log u) as
+ * tv -> infinity (where G ~ exp(-x^2)); past the top 1/tv it uses the
+ * quadratic tail G(1/tv) - G(x) ~ tv exp(-1/tv^2) (1/tv - x)^2 / (2 sqrt(pi)). */
+/* Halley converges cubically: after a step s the error is O(s^3) (times
+ * 1 / (1/tv - x)^2 near the top, hence the tolerance relative to that gap), so
+ * a step below eps^(1/3) / 5 is the last one. */
+#ifndef MF__HALLEY_TOL
+#ifdef MF_USE_DOUBLE
+#define MF__HALLEY_TOL MF_R(1e-6)
+#else
+#define MF__HALLEY_TOL MF_R(1e-3)
+#endif
+#endif
 MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_real *sx, mf_real *sy)
 {
-    mf_real mu = tv > MF_R(1.0) / MF_R(12.0) ? MF_R(1.0) / tv : MF_R(12.0);
-    mf_real inv = MF_R(1.0) / (MF_R(1.0) + tv), k = MF_R(0.5) / MF_SQRT_PI;
-    mf_real target = mf_clamp(u1, MF_R(0.0), MF_R(1.0)) *
-                     (MF_R(0.5) * MF_ERFC(-mu) + tv * k * MF_EXP(-mu * mu)) * inv;
-    mf_real lo = MF_R(-12.0), hi = mu, x;
+    const mf_real k = MF_R(0.28209479177387814);   /* 1 / (2 sqrt(pi)) */
+    mf_real u = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), w = tv / (MF_R(0.5) + tv);
+    mf_real mu = tv > MF_R(1.0) / MF_R(12.0) ? MF_R(1.0) / tv : MF_R(12.0), total = MF_R(1.0), top = MF_R(0.0);
+    mf_real lo = MF_R(-12.0), hi = mu, x, target;
     int i;
-    x = mf_clamp(mf_erfinv(MF_R(2.0) * u1 - MF_R(1.0)), lo, hi);   /* exact at tv = 0 */
+    *sy = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
+    if (!(tv > MF_EPS) && MF_FABS(u - MF_R(0.5)) < MF_R(0.4999)) {   /* x(tv) = x(0) + O(tv) */
+        *sx = mf_erfinv(MF_R(2.0) * u - MF_R(1.0));
+        return;
+    }
+    x = mf__erfinv_giles(mf_clamp(MF_R(2.0) * u - MF_R(1.0), MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS));
+    x = (MF_R(1.0) - w) * x - w * MF_SQRT(-MF_LOG(mf_max(u, MF_R(1e-30))));
+    if (tv > MF_R(1.0) / MF_R(6.0)) {   /* else G(mu) = 1 to double precision */
+        top = tv * k * MF_EXP(-mu * mu);
+        total = MF_R(0.5) * MF_ERFC(-mu) + top;
+        if (x >= mu) x = mu - MF_SQRT((MF_R(1.0) - u) * total / mf_max(top, MF_R(1e-30)));
+    }
+    target = u * total;
+    x = mf_clamp(x, lo, hi);
     for (i = 0; i < 60; ++i) {
-        mf_real e = MF_EXP(-x * x);
-        mf_real f = (MF_R(0.5) * MF_ERFC(-x) + tv * k * e) * inv - target;
-        mf_real df = e * (MF_R(1.0) - tv * x) * inv / MF_SQRT_PI;
-        if (mf__newton_step(&x, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + MF_FABS(x)))) break;
+        mf_real e = MF_EXP(-x * x), s = MF_R(1.0) - tv * x;
+        mf_real f = MF_R(0.5) * MF_ERFC(-x) + tv * k * e - target;
+        mf_real df = MF_R(2.0) * k * e * s, r = df > MF_R(0.0) ? f / df : MF_R(0.0);
+        /* Halley: f / (f' - f f'' / (2 f')), with f''/f' = -2x - tv / (1 - tv x);
+         * a non-positive effective slope falls back to bisection */
+        df *= MF_R(1.0) + MF_R(0.5) * r * (MF_R(2.0) * x + tv / mf_max(s, MF_R(1e-30)));
+        if (mf__newton_step(&x, f, df, &lo, &hi, MF__HALLEY_TOL * mf_min(MF_R(1.0) + MF_FABS(x), mu - x))) break;
     }
     *sx = x;
-    *sy = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
 }
 /* D, homogeneous of degree -4: N / ((sin^2 + a^2 cos^2)^gamma |wm|^4) */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm)

@@ -483,7 +483,51 @@ static double b_plain_G2(const mf_ndf *d)
 }
 static double b_fresnel(const mf_ndf *d) { (void)d; LOOP(mf_fresnel_conductor(g_wo[i].z, MF_R(0.2), MF_R(3.9))); }
 
-int main(void)
+/* ---- baseline: Beckmann visible normals by slope-space inversion (Heitz &
+ * d'Eon 2014) with the plain solve this library used before: safeguarded
+ * Newton from erfinv(2u - 1) whatever the view, erfc and exp per step ---- */
+static mf_vec3 g_wb[N];
+static mf_vec3 newton_beckmann_vndf(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_real cv, sv, cp, sp, tv, mu, inv, k = MF_R(0.5) / MF_SQRT_PI, target, lo, hi, x, y, sx;
+    int i;
+    mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
+    tv = sv / mf_max(cv, MF_R(1e-30));
+    mu = tv > MF_R(1.0) / MF_R(12.0) ? MF_R(1.0) / tv : MF_R(12.0);
+    inv = MF_R(1.0) / (MF_R(1.0) + tv);
+    target = mf_clamp(u1, MF_R(0.0), MF_R(1.0)) * (MF_R(0.5) * MF_ERFC(-mu) + tv * k * MF_EXP(-mu * mu)) * inv;
+    lo = MF_R(-12.0); hi = mu;
+    x = mf_clamp(mf_erfinv(MF_R(2.0) * u1 - MF_R(1.0)), lo, hi);
+    for (i = 0; i < 60; ++i) {
+        mf_real e = MF_EXP(-x * x);
+        mf_real f = (MF_R(0.5) * MF_ERFC(-x) + tv * k * e) * inv - target;
+        mf_real df = e * (MF_R(1.0) - tv * x) * inv / MF_SQRT_PI;
+        if (mf__newton_step(&x, f, df, &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + MF_FABS(x)))) break;
+    }
+    y = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
+    sx = cp * x - sp * y;
+    y = sp * x + cp * y;
+    return mf_normalize(mf_vec3_make(-ax * sx, -ay * y, MF_R(1.0)));
+}
+static double b_beck_newton(const mf_ndf *d) { LOOP(newton_beckmann_vndf(d->ax, d->ay, g_wb[i], g_u1[i], g_u2[i]).z); }
+static double b_beck_vndf(const mf_ndf *d) { LOOP(mf_beckmann_sample_visible(d->ax, d->ay, g_wb[i], g_u1[i], g_u2[i]).z); }
+static void bench_beckmann_vndf(void)
+{
+    const double views[] = { 0.0, 30.0, 60.0, 80.0, 89.0 };
+    mf_ndf d = mf_beckmann(MF_R(0.3), MF_R(0.3));
+    int v, i;
+    for (v = 0; v < 5; ++v) {
+        double t = views[v] * 3.141592653589793 / 180.0, tb, to;
+        for (i = 0; i < N; ++i) {
+            double p = 6.283185307179586 * (double)rnd();
+            g_wb[i] = mf_vec3_make((mf_real)(sin(t) * cos(p)), (mf_real)(sin(t) * sin(p)), (mf_real)cos(t));
+        }
+        run_pair(b_beck_newton, b_beck_vndf, &d, &tb, &to);
+        printf("bench beckmann_vndf_%.0fdeg %.2f ratio=%.3f newton_baseline=%.2f alpha=0.3\n", views[v], to, to / tb, tb);
+    }
+}
+
+int main(int argc, char **argv)
 {
     struct { const char *name; mf_ndf d; } ks[5];
     int i, k;
@@ -515,6 +559,10 @@ int main(void)
            "(see Makefile: -O2)",
 #endif
            sizeof(mf_real) == sizeof(double) ? "double" : "float", N, REPS);
+    if (argc > 1 && !strcmp(argv[1], "beckmann_vndf")) {   /* one section only */
+        bench_beckmann_vndf();
+        return 0;
+    }
     {
         const mf_ndf *g = &ks[1].d;
         double base, ours, inl, pd, od, pg, og;
@@ -649,6 +697,7 @@ int main(void)
         printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
         g_sink += s + (double)fr.albedo;
     }
+    bench_beckmann_vndf();
     bench_tabulated();
     bench_ibm();
     bench_microsurface();

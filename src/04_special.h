@@ -22,11 +22,9 @@ MF_INLINE mf_real mf__log1p_over_x(mf_real x)
 
 /* Inverse of erf on (-1, 1): Giles' single-precision approximation (2010),
  * polished by Newton steps on erf/erfc. Finite for every input (clamped). */
-MF_INLINE mf_real mf_erfinv(mf_real y)
+MF_INLINE mf_real mf__erfinv_giles(mf_real y)
 {
-    mf_real w, p, x;
-    int i;
-    y = mf_clamp(y, MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS);
+    mf_real w, p;
     w = -MF_LOG((MF_R(1.0) - y) * (MF_R(1.0) + y));
     if (w < MF_R(5.0)) {
         w = w - MF_R(2.5);
@@ -51,7 +49,14 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
         p = MF_R(1.00167406) + p * w;
         p = MF_R(2.83297682) + p * w;
     }
-    x = p * y;
+    return p * y;
+}
+MF_INLINE mf_real mf_erfinv(mf_real y)
+{
+    mf_real x;
+    int i;
+    y = mf_clamp(y, MF_R(-1.0) + MF_EPS, MF_R(1.0) - MF_EPS);
+    x = mf__erfinv_giles(y);
 #ifdef MF_USE_DOUBLE
     for (i = 0; i < 2; ++i) { /* Newton on the tail-accurate side */
         mf_real r = x >= 0.0 ? (1.0 - y) - MF_ERFC(x) : MF_ERFC(-x) - (1.0 + y); /* erf(x) - y */

@@ -82,6 +82,78 @@ static int is_spline(const mft_case *c)
     return c->kind == MF_NDF_GTR && fabs(c->gamma - floor(c->gamma + 0.5)) > 1e-9 && c->ax < 1.0;
 }
 
+/* Beckmann visible slopes: the returned slope x along the view inverts the
+ * visible-slope CDF F(x) = G(x) / G(1/tv), G(x) = erfc(-x)/2 + tv e^{-x^2}/(2 sqrt(pi))
+ * (Heitz & d'Eon 2014 Eq. 9), evaluated here in double, on a dense grid of
+ * (u, view) from normal incidence to the horizon, u at 0, 1 and near them.
+ * Tolerance: |F(x) - u| <= 8 eps (1 + p(x) (1 + |x|)), p = F', i.e. a few ulps
+ * of u plus a few ulps of x. */
+static void beckmann_slope_cdf_check(void)
+{
+    const double k = 0.28209479177387814;
+    double worst = 0.0, worst_raw = 0.0, eps = MFT_TOL(2.220446049250313e-16, 1.1920929e-07);
+    int iv, iu, n = 0, bad = 0, nonfinite = 0;
+    char msg[200];
+    for (iv = 0; iv <= 200; ++iv) {
+        /* views 0 .. 89.99 deg on a grid denser towards grazing, then 1e3 .. 1e30 */
+        double tv = iv <= 180 ? tan((1.0 - pow(1.0 - iv / 180.0, 2.0)) * 89.99 * 3.14159265358979323846 / 180.0)
+                              : pow(10.0, 3.0 + 27.0 * (iv - 181) / 19.0);
+        double mu = tv > 0.0 ? 1.0 / tv : 1e300;
+        double top = tv > 0.0 ? 0.5 * erfc(-mu) + tv * k * exp(-mu * mu) : 1.0;
+        for (iu = -6; iu <= 2006; ++iu) {
+            double u = iu < 0 ? pow(10.0, -1.0 + iu) : iu > 2000 ? 1.0 - pow(10.0, -8.0 + (iu - 2001)) : iu / 2000.0;
+            mf_real sx, sy;
+            double x, F, p, err;
+            mf__beckmann_visible_slopes((mf_real)tv, (mf_real)u, MF_R(0.5), &sx, &sy);
+            x = (double)sx;
+            ++n;
+            if (!(x == x) || fabs(x) > 1e30) { ++nonfinite; continue; }
+            F = x >= mu ? 1.0 : (0.5 * erfc(-x) + tv * k * exp(-x * x)) / top;
+            p = x >= mu ? 0.0 : exp(-x * x) * (1.0 - tv * x) / (sqrt(3.14159265358979323846) * top);
+            u = (double)(mf_real)u;
+            err = fabs(F - u) / (eps * (1.0 + p * (1.0 + fabs(x))));
+            if (err > worst) worst = err;
+            if (fabs(F - u) > worst_raw) worst_raw = fabs(F - u);
+            if (err > 8.0) { ++bad; if (mft_verbose) printf("    off: tv=%.17g u=%.17g x=%.17g err=%.2f\n", tv, u, x, err); }
+        }
+    }
+    printf("    Beckmann visible slope CDF: %d (u, view) points, worst |F(x) - u| = %.3g = %.2f eps-units (fail above 8)\n",
+           n, worst_raw, worst);
+    snprintf(msg, sizeof msg, "Beckmann visible slope inverts its CDF (%d of %d off, worst %.2f eps units)", bad, n, worst);
+    MFT_CHECK(bad == 0, msg);
+    MFT_CHECK(nonfinite == 0, "Beckmann visible slopes finite");
+}
+
+/* Beckmann visible normals at grazing views (85 to 89.9 degrees), isotropic
+ * and anisotropic, alpha 1e-4 to 1: chi-square against D_visible, and every
+ * sample finite and in the upper hemisphere even at and past the horizon and
+ * for u outside [0, 1]. */
+static void beckmann_grazing_check(void)
+{
+    const double th[] = { 1.4835298641951802, 1.5184364492350666, 1.5533430342749532, 1.5690509975429023 };
+    const double al[][2] = { { 0.3, 0.3 }, { 0.05, 0.6 }, { 1.0, 1.0 }, { 1e-4, 1e-4 } };
+    const double us[] = { 0.0, 1.0, -0.5, 1.5, 1e-30, 0.5 };
+    int a, j, i, i2, bad = 0;
+    char name[64];
+    for (a = 0; a < 4; ++a) {
+        mf_ndf d = mf_beckmann((mf_real)al[a][0], (mf_real)al[a][1]);
+        snprintf(name, sizeof name, "beckmann_grazing_%g_%g", al[a][0], al[a][1]);
+        for (j = 0; j < 4; ++j)
+            if (a < 3) mft_sampler_check(name, &d, mft_dir(th[j], 0.3 + j), 1, 200000, 0, 777 + 5 * a + j);
+        for (j = 0; j < 8; ++j) {
+            double t = j < 4 ? th[j % 4] : 1.5707963267948966 + 0.1 * (j - 4);
+            mf_vec3 w = mf_vec3_make((mf_real)(sin(t) * cos(0.7 * j)), (mf_real)(sin(t) * sin(0.7 * j)), (mf_real)fabs(cos(t)));
+            if (j == 4) w = mf_vec3_make(MF_R(1.0), MF_R(0.0), MF_R(0.0));
+            for (i = 0; i < 6; ++i)
+                for (i2 = 0; i2 < 6; ++i2) {
+                    mf_vec3 m = mf_beckmann_sample_visible((mf_real)al[a][0], (mf_real)al[a][1], w, (mf_real)us[i], (mf_real)us[i2]);
+                    if (!(m.z >= 0.0 && m.z <= 1.0) || !(m.x == m.x) || !(m.y == m.y)) ++bad;
+                }
+        }
+    }
+    MFT_CHECK(bad == 0, "Beckmann visible normals finite, upper hemisphere at grazing, horizon and edge u");
+}
+
 void test_sampling(void)
 {
     const double thetas[] = { 0.0, 0.6, 1.2, 1.5 };
@@ -97,5 +169,6 @@ void test_sampling(void)
         for (j = 0; j < 4; ++j)
             mft_sampler_check(cs->name, &d, mft_dir(thetas[j], 0.4 + j), 1, n, is_spline(cs), 100 + 7 * i + j);
     }
+    if (!only || strstr("beckmann_vndf", only)) { beckmann_slope_cdf_check(); beckmann_grazing_check(); }
     printf("    worst chi-square z over all sampling tests: %.2f (fail above 5)\n", worst_z);
 }
