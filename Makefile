@@ -20,7 +20,7 @@ ifneq ($(EXR),no)
 HAVE_EXR   := $(shell pkg-config --exists OpenEXR 2>/dev/null && echo yes)
 endif
 ifeq ($(HAVE_EXR),yes)
-EXR_CFLAGS := $(shell pkg-config --cflags OpenEXR)
+EXR_CFLAGS := $(patsubst -I%,-isystem %,$(shell pkg-config --cflags OpenEXR))
 EXR_LIBS   := $(shell pkg-config --libs OpenEXR)
 EXR_DEFS   := -DMF_EXAMPLE_EXR $(EXR_CFLAGS)
 EXR_HDR    := tools/exr_io.h
