@@ -14,6 +14,7 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 
+.PHONY: fuzz fuzz-smoke fuzz-build
 .PHONY: all test test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
         header header-check config-check ltc-table
 
@@ -87,6 +88,40 @@ asan: | $(BUILD)
 	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_f.o -o $(BUILD)/asan_double -lm
 	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMFT_OTHER=double -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_d.o -o $(BUILD)/asan_float -lm
 	@sh tests/run_all.sh "" $(BUILD)/asan_double $(BUILD)/asan_float
+
+# ---- libFuzzer targets (tests/fuzz/): clang with -fsanitize=fuzzer,address,
+# ---- undefined. `make fuzz` runs each for FUZZ_TIME seconds in float and in
+# ---- double; make test runs each (float) for FUZZ_SMOKE seconds.
+FUZZ_TARGETS := generic ibm_load builders ltc
+FUZZ_TIME  ?= 60
+FUZZ_SMOKE ?= 2
+FUZZ_FLAGS := -std=c99 -g -O1 -fno-sanitize-recover=undefined -I. -Itests/fuzz
+FUZZ_PREC  ?= float double
+$(BUILD)/fuzz/impl_float.o: tests/fuzz/fuzz_impl.c microfacet.h
+	@mkdir -p $(BUILD)/fuzz
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+$(BUILD)/fuzz/impl_double.o: tests/fuzz/fuzz_impl.c microfacet.h
+	@mkdir -p $(BUILD)/fuzz
+	clang $(FUZZ_FLAGS) -DMF_USE_DOUBLE -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+$(BUILD)/fuzz/fuzz_%_float: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(BUILD)/fuzz/impl_float.o
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,address,undefined $< $(BUILD)/fuzz/impl_float.o -o $@ -lm
+$(BUILD)/fuzz/fuzz_%_double: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(BUILD)/fuzz/impl_double.o
+	clang $(FUZZ_FLAGS) -DMF_USE_DOUBLE -fsanitize=fuzzer,address,undefined $< $(BUILD)/fuzz/impl_double.o -o $@ -lm
+$(BUILD)/fuzz/make_seeds: tests/fuzz/make_seeds.c
+	@mkdir -p $(BUILD)/fuzz
+	$(CC) -std=c99 -O1 $(TWARN) $< -o $@
+fuzz-build: $(BUILD)/fuzz/make_seeds $(foreach p,$(FUZZ_PREC),$(foreach t,$(FUZZ_TARGETS),$(BUILD)/fuzz/fuzz_$(t)_$(p)))
+fuzz:
+ifeq ($(HAVE_CLANG),yes)
+	@$(MAKE) --no-print-directory fuzz-build
+	@sh tests/fuzz/run.sh $(BUILD)/fuzz $(FUZZ_TIME) "$(FUZZ_PREC)" $(FUZZ_TARGETS)
+else
+	@echo "fuzz: clang not found, skipped"
+endif
+# make test runs this: each target for FUZZ_SMOKE seconds (float), or one
+# line saying why it was skipped
+fuzz-smoke:
+	@sh tests/fuzz/smoke.sh "$(MAKE)" $(BUILD)/fuzz $(FUZZ_SMOKE) $(FUZZ_TARGETS)
 
 bench: | $(BUILD)
 	$(CC) -std=c99 -O2 $(WARN) -DMF_BENCH_FLAGS="\"-std=c99 -O2\"" -I. bench/bench.c -o $(BUILD)/bench -lm

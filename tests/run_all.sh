@@ -8,6 +8,10 @@ if [ -n "$make_cmd" ]; then
   else failed=$((failed + 1)); echo "FAIL header check"; fi
   if $make_cmd --no-print-directory config-check; then passed=$((passed + 1))
   else failed=$((failed + 1)); echo "FAIL config check"; fi
+  fz=$($make_cmd --no-print-directory -s fuzz-smoke 2>&1)
+  printf '%s\n' "$fz"
+  passed=$((passed + $(printf '%s\n' "$fz" | grep -c '^fuzz ok')))
+  failed=$((failed + $(printf '%s\n' "$fz" | grep -c '^FAIL')))
   if $make_cmd --no-print-directory warnings; then passed=$((passed + 1)); echo "warnings check: ok"
   else failed=$((failed + 1)); echo "FAIL warnings check"; fi
 fi
