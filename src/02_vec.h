@@ -19,9 +19,12 @@ MF_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 {
     return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x < lo ? lo : (x > hi ? hi : x); }
+/* x clamped to [lo, hi]; NaN gives lo */
+MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 MF_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
 MF_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+/* x capped at MF_BIG; NaN becomes 0 (the results that may overflow float) */
+MF_INLINE mf_real mf__cap(mf_real x) { return x < MF_BIG ? x : (x == x ? MF_BIG : MF_R(0.0)); }
 
 /* Unit vector along v; the zero vector when v is zero (or not finite). */
 MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)

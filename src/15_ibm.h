@@ -218,6 +218,7 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
                                 mf_real u3, mf_real u4);
 
 /* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
+#define MF_IBM_MIN_CUT MF_R(0.1)
 /* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
  * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
  * normalized before binning), row-major, texel (x, y) at index y*width + x.
@@ -226,7 +227,8 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
  * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
  * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
- * and the cut in sigmas (0: 3); the neighbourhood radius r grows with b so
+ * and the cut in sigmas (0: 3, else in [MF_IBM_MIN_CUT, 10]: a cut that
+ * rounds to 0 in float would not reload); the neighbourhood radius r grows with b so
  * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
  * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
  * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
@@ -1118,7 +1120,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     mf__ibm_zero(ibm);
     mf__ibm_zero(&L);
     if (!normals_xyz || width < 1 || width > 16384 || height < 1 || height > 16384 || !(flake_alpha > MF_R(0.0)) ||
-        resolution < 0 || resolution > MF_IBM_MAX_RES || !(cut_sigmas >= MF_R(0.0)) || !(cut_sigmas <= MF_R(10.0)))
+        resolution < 0 || resolution > MF_IBM_MAX_RES || !(cut_sigmas >= MF_R(0.0)) || !(cut_sigmas <= MF_R(10.0)) ||
+        (cut_sigmas > MF_R(0.0) && cut_sigmas < MF_IBM_MIN_CUT))
         return MF_ERROR_INVALID_ARGUMENT;
     alpha = mf__ibm_bitsf(mf__ibm_fbits(mf__clamp_alpha(flake_alpha)));
     cut = mf__ibm_bitsf(mf__ibm_fbits(cut_sigmas > MF_R(0.0) ? cut_sigmas : MF_R(3.0)));

@@ -59,7 +59,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (which == 0) {
         mf_ibm ibm;
         int w = 1 + (int)(fz_u8(&in) % 24u), h = 1 + (int)(fz_u8(&in) % 24u), res = (int)(fz_u8(&in) % 40u);
-        mf_real alpha = fz_real(&in), cut = (fz_u8(&in) & 1u) ? fz_real(&in) : MF_R(0.0);
+        /* raw alpha one time in 64: small alphas give up to 1024^2 bins, slow */
+        unsigned am = fz_u8(&in);
+        mf_real alpha = (am & 63u) == 0u ? fz_real(&in) : MF_R(0.1) + MF_R(0.004) * (mf_real)fz_u8(&in);
+        unsigned cm = fz_u8(&in);
+        mf_real cut = (cm & 15u) == 1u ? fz_real(&in) : (cm & 1u) ? MF_R(1.0) + MF_R(0.03) * (mf_real)fz_u8(&in) : MF_R(0.0);
         fz_normals(&in, w * h);
         if (mf_ibm_build_ex(&ibm, fz_buf, w, h, alpha, res, cut) == MF_SUCCESS) {
             mf_footprint f;

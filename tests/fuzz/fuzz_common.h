@@ -42,7 +42,10 @@ static mf_real fz_unit(fz_in *in)
 }
 static int fz_finite(double x) { return x == x && x - x == 0.0; }
 
-#define FZ_FAIL(...) do { fprintf(stderr, "fuzz check failed: " __VA_ARGS__); fprintf(stderr, "\n"); abort(); } while (0)
+/* what the target was doing, printed with a failure */
+static char fz_ctx[1024];
+#define FZ_FAIL(...) do { fprintf(stderr, "fuzz check failed: " __VA_ARGS__); \
+    fprintf(stderr, "\n  input: %s\n", fz_ctx); abort(); } while (0)
 /* finite and >= 0 */
 #define FZ_NONNEG(x, what) do { double fz_v_ = (double)(x); \
     if (!fz_finite(fz_v_) || fz_v_ < 0.0) FZ_FAIL("%s = %g", what, fz_v_); } while (0)

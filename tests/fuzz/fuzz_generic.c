@@ -1,5 +1,6 @@
 /* Fuzz target: the generic API. Every constructor (transforms included) with
- * arbitrary float bit patterns for parameters, directions and random numbers.
+ * arbitrary float bit patterns for parameters and random numbers, unit
+ * directions from arbitrary bit patterns (see fz_dir).
  * Asserts: no crash, no NaN/Inf, pdf >= 0, pdf(sample) > 0 for every
  * returned sample, finite weights. */
 #include "fuzz_common.h"
@@ -7,19 +8,20 @@
 static mf_tabulated fz_tab;
 static int fz_tab_ok = 0;
 
-/* a direction: half the time normalized from the fuzzed components (the
- * library's contract), otherwise the raw pattern */
+/* a direction: a unit vector normalized (in double) from three arbitrary
+ * float bit patterns (the library's contract is unit directions; this reaches
+ * the horizon, denormal components and exact axes), or the zero vector when
+ * they are not finite or all zero; mode bit 1 mirrors it above the horizon */
 static mf_vec3 fz_dir(fz_in *in)
 {
     unsigned mode = fz_u8(in);
-    mf_vec3 w;
-    w.x = fz_real(in); w.y = fz_real(in); w.z = fz_real(in);
-    if (mode & 1u) {
-        double x = w.x, y = w.y, z = w.z, l = sqrt(x * x + y * y + z * z);
-        if (fz_finite(l) && l > 1e-30) { w.x = (mf_real)(x / l); w.y = (mf_real)(y / l); w.z = (mf_real)(z / l); }
-        else w = mf_vec3_make(0, 0, 1);
-        if (mode & 2u) w.z = MF_FABS(w.z);
-    }
+    double x = (double)fz_real(in), y = (double)fz_real(in), z = (double)fz_real(in), l;
+    mf_vec3 w = mf_vec3_make(0, 0, 0);
+    if (mode & 4u) { x *= 1e-30; y *= 1e-30; }   /* near the pole */
+    if (mode & 8u) z *= 1e-30;                   /* near the horizon */
+    l = sqrt(x * x + y * y + z * z);
+    if (fz_finite(l) && l > 0.0) { w.x = (mf_real)(x / l); w.y = (mf_real)(y / l); w.z = (mf_real)(z / l); }
+    if (mode & 2u) w.z = MF_FABS(w.z);
     return w;
 }
 
@@ -66,6 +68,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mf_ndf d = fz_ndf(&in);
     mf_vec3 wo = fz_dir(&in), wi = fz_dir(&in), wm = fz_dir(&in), s;
     mf_real u1 = fz_unit(&in), u2 = fz_unit(&in), v;
+    snprintf(fz_ctx, sizeof fz_ctx, "type %d ax %.9g ay %.9g p0 %.9g p1 %.9g p2 %.9g tr %d M %.9g %.9g %.9g %.9g "
+             "wo %.9g %.9g %.9g wi %.9g %.9g %.9g wm %.9g %.9g %.9g u %.9g %.9g", (int)d.type, (double)d.ax, (double)d.ay,
+             (double)((mf_real *)&d.p)[0], (double)((mf_real *)&d.p)[1], (double)((mf_real *)&d.p)[2], d.transformed,
+             (double)d.M.m00, (double)d.M.m01, (double)d.M.m10, (double)d.M.m11, (double)wo.x, (double)wo.y, (double)wo.z,
+             (double)wi.x, (double)wi.y, (double)wi.z, (double)wm.x, (double)wm.y, (double)wm.z, (double)u1, (double)u2);
 
     FZ_NONNEG(mf_D(&d, wm), "D");
     FZ_NONNEG(mf_lambda(&d, wo), "lambda");
