@@ -513,6 +513,25 @@ MF_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 MF_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
 MF_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+/* 1 if x is finite, read from its bits: -ffast-math (__FAST_MATH__) lets the
+ * compiler assume that no value is NaN or Inf and fold x == x, x - x == 0 or
+ * isnan(x) to true; the validation of data that may index memory uses this. */
+MF_INLINE int mf__finite_bits(mf_real x)
+{
+#ifdef MF_USE_DOUBLE
+    union { double d; unsigned char c[8]; } v;
+    union { unsigned int i; unsigned char c[4]; } e;
+    unsigned int hi;
+    v.d = x;
+    e.i = 1u;
+    hi = e.c[0] == 1u ? ((unsigned int)v.c[7] << 8 | v.c[6]) : ((unsigned int)v.c[0] << 8 | v.c[1]);
+    return (hi & 0x7ff0u) != 0x7ff0u;
+#else
+    union { float f; unsigned int u; } v;
+    v.f = x;
+    return (v.u & 0x7f800000u) != 0x7f800000u;
+#endif
+}
 /* x capped at MF_BIG; NaN becomes 0 (the results that may overflow float) */
 MF_INLINE mf_real mf__cap(mf_real x) { return x < MF_BIG ? x : (x == x ? MF_BIG : MF_R(0.0)); }
 
@@ -2390,8 +2409,11 @@ MF_INLINE unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
 MF_INLINE int mf__ibm_cell(mf_real v, int b)
 {
     mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
+    int c;
     if (!(f > MF_R(0.0))) return 0;              /* also NaN */
-    return f >= (mf_real)b ? b - 1 : (int)f;     /* truncation = floor for f > 0 */
+    if (f >= (mf_real)b) return b - 1;
+    c = (int)f;                                  /* truncation = floor for f > 0 */
+    return c >= 0 && c < b ? c : 0;              /* in range even where -ffast-math let NaN through */
 }
 
 /* b*b: the number of bins (those outside the unit disk stay empty). */
@@ -2553,7 +2575,7 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
  * different samples). d must be centered
  * (every periodic surface has mean slope 0): a LEADR distribution with a
  * non-zero mean slope is rejected. Errors: NULL pointers, bad size, negative
- * iterations, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
+ * iterations or more than MF_MICROSURFACE_MAX_ITERATIONS, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
  * (MF_ERROR_OUT_OF_MEMORY); nothing stays allocated on failure. */
 /* 64-bit seeds: unsigned long long (C99, C++11; C++98 compilers accept it
  * as an extension, quietly here) */
@@ -2568,6 +2590,9 @@ typedef unsigned long long mf_u64;
 #define MF_MICROSURFACE_MIN_SIZE 8
 #define MF_MICROSURFACE_MAX_SIZE 4096
 #define MF_MICROSURFACE_THRESHOLD MF_R(0.02)
+/* the most re-matching iterations a call accepts (the paper uses 500; at
+ * 4096^2 this cap is about 5 days of one core): more is an invalid argument */
+#define MF_MICROSURFACE_MAX_ITERATIONS 100000
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
 
@@ -3786,19 +3811,23 @@ MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, int row, const mf_real *x
 MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
 {
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
-    int row, pieces = 0;
+    int row, pieces = 0, edges_ok;
     p->mode = MF__IBM_NONE;
     p->direct = 0;
     p->full = MF_R(0.0);
     if (!f) return;
+    /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
+    if (!mf__finite_bits(f->u) || !mf__finite_bits(f->v)) return;
+    edges_ok = mf__finite_bits(f->ax) && mf__finite_bits(f->ay) && mf__finite_bits(f->bx) && mf__finite_bits(f->by);
     p->cx = f->u * W; p->cy = f->v * H;
     if (!(MF_FABS(p->cx) < MF_BIG) || !(MF_FABS(p->cy) < MF_BIG)) return;
     p->cx -= W * MF_FLOOR(p->cx / W);
     p->cy -= H * MF_FLOOR(p->cy / H);
     if (!(p->cx >= MF_R(0.0)) || !(p->cx < W)) p->cx = MF_R(0.0);   /* rounding at the period edge */
     if (!(p->cy >= MF_R(0.0)) || !(p->cy < H)) p->cy = MF_R(0.0);
-    p->tx = (int)p->cx; if (p->tx >= ibm->width) p->tx = ibm->width - 1;
-    p->ty = (int)p->cy; if (p->ty >= ibm->height) p->ty = ibm->height - 1;
+    p->tx = (int)p->cx; if (p->tx >= ibm->width || p->tx < 0) p->tx = p->tx < 0 ? 0 : ibm->width - 1;
+    p->ty = (int)p->cy; if (p->ty >= ibm->height || p->ty < 0) p->ty = p->ty < 0 ? 0 : ibm->height - 1;
+    if (!edges_ok) { p->mode = MF__IBM_POINT; return; }
     p->ax = f->ax * W; p->ay = f->ay * H; p->bx = f->bx * W; p->by = f->by * H;
     cross = p->ax * p->by - p->ay * p->bx;
     p->area = MF_FABS(cross);
@@ -3991,18 +4020,22 @@ MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, mf__ibm_set *s, unsigned int v
     return k;
 }
 
-/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin). */
-MF_INLINE void mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
+/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin); returns the
+ * piece's area as the texel areas add up (every bin, listed or not). */
+MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
 {
+    mf_real tot = MF_R(0.0);
     int x, y;
     for (y = pc->by0; y < pc->by1; ++y)
         for (x = pc->bx0; x < pc->bx1; ++x) {
             mf_real a = mf__ibm_texel_area(pc, x, y);
             int k;
             if (!(a > MF_R(0.0))) continue;
+            tot += a;
             k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)y * (size_t)ibm->width + (size_t)x, ibm->bin_bits));
             if (k >= 0) s->w[k] += a;
         }
+    return tot;
 }
 
 /* first index in [s, e) whose Morton code has bit `bit` set */
@@ -4102,7 +4135,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * bin once, the pieces by direct sum or kd traversal, all divided by |A|. */
 MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
-    mf_real tot;
+    mf_real tot, dtot = MF_R(0.0);
     int i;
     if (p->mode == MF__IBM_NONE) { for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0); return; }
     if (p->mode == MF__IBM_POINT) {
@@ -4129,7 +4162,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
                 if (col >= f0 && col <= f1) continue;
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
                 tot += mf__ibm_shoelace(pc.x, pc.y, pc.n);
-                if (p->direct) mf__ibm_direct(ibm, &pc, s);
+                if (p->direct) dtot += mf__ibm_direct(ibm, &pc, s);
                 else
                     for (i = 0; i < s->n; i += MF_IBM_BATCH)
                         mf__ibm_traverse(ibm, &pc, s->bin + i, s->n - i < MF_IBM_BATCH ? s->n - i : MF_IBM_BATCH, s->w + i);
@@ -4137,7 +4170,11 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         }
     }
     /* |A| as the pieces add up, so that the weights of all bins sum to 1 even
-     * where float round-off moves the corners of a thin footprint */
+     * where float round-off moves the corners of a thin footprint; in the
+     * direct sum, as the texel areas themselves add up (the clipped texels
+     * and the shoelace of the pieces round differently: on a flat map, where
+     * one bin holds every texel, the weight is then exactly 1) */
+    if (p->direct && dtot > MF_R(0.0)) tot = dtot;
     if (!(tot > MF_R(0.0))) tot = p->area;
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
@@ -4641,10 +4678,11 @@ MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *height
     if (!heights || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
         !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
-    for (i = 0; i < w * h; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+    /* allocation first: a size the allocator refuses never reads the data */
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
+    for (i = 0; i < w * h; ++i)
+        if (!(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
     for (y = 0; y < h; ++y)
         for (x = 0; x < w; ++x) {
             size_t xp = (x + 1) % w, xm = (x + w - 1) % w, yp = (y + 1) % h, ym = (y + h - 1) % h;
@@ -4671,13 +4709,16 @@ MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normal
     if (!normals_xyz || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
         !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
+    r = mf__leadr_alloc(m, width, height);
+    if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
     for (i = 0; i < n_texels; ++i) {
         const mf_real *n = normals_xyz + 3 * i;
         mf_real l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        if (!(n[2] >= MF_LEADR_MIN_NORMAL_Z) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) return MF_ERROR_INVALID_DATA;
+        if (!(n[2] >= MF_LEADR_MIN_NORMAL_Z) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+            mf_leadr_map_release(m);
+            return MF_ERROR_INVALID_DATA;
+        }
     }
-    r = mf__leadr_alloc(m, width, height);
-    if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
     for (i = 0; i < n_texels; ++i) {
         const mf_real *n = normals_xyz + 3 * i;
         m->texels[i] = mf_leadr_with_roughness(mf_leadr_from_normal(mf_vec3_make(n[0], n[1], n[2])), alpha_x, alpha_y);
@@ -7242,7 +7283,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     mf_real nz, l2, il;
                     if (tx >= width || ty >= height) continue;
                     nx = nv[0]; ny = nv[1]; nz = nv[2]; l2 = nx * nx + ny * ny + nz * nz;
-                    if (!(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+                    if (!mf__finite_bits(nx) || !mf__finite_bits(ny) || !mf__finite_bits(nz) ||
+                        !(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
                         MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
                         return MF_ERROR_INVALID_DATA;
                     }
@@ -8062,7 +8104,7 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
         stats->rms_target = stats->rms_central = stats->rms_triangle = MF_R(0.0);
     }
     if (!d || !o || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
-        o->iterations < 0 || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
+        o->iterations < 0 || o->iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
         !(o->max_rematch >= MF_R(0.0) && o->max_rematch <= MF_R(1.0)) || !mf__ms_ndf_ok(d))
         return MF_ERROR_INVALID_ARGUMENT;
     thr = (double)o->threshold;

@@ -412,10 +412,11 @@ MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *height
     if (!heights || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
         !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
-    for (i = 0; i < w * h; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+    /* allocation first: a size the allocator refuses never reads the data */
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
+    for (i = 0; i < w * h; ++i)
+        if (!(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
     for (y = 0; y < h; ++y)
         for (x = 0; x < w; ++x) {
             size_t xp = (x + 1) % w, xm = (x + w - 1) % w, yp = (y + 1) % h, ym = (y + h - 1) % h;
@@ -442,13 +443,16 @@ MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normal
     if (!normals_xyz || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
         !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
+    r = mf__leadr_alloc(m, width, height);
+    if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
     for (i = 0; i < n_texels; ++i) {
         const mf_real *n = normals_xyz + 3 * i;
         mf_real l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        if (!(n[2] >= MF_LEADR_MIN_NORMAL_Z) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) return MF_ERROR_INVALID_DATA;
+        if (!(n[2] >= MF_LEADR_MIN_NORMAL_Z) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+            mf_leadr_map_release(m);
+            return MF_ERROR_INVALID_DATA;
+        }
     }
-    r = mf__leadr_alloc(m, width, height);
-    if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
     for (i = 0; i < n_texels; ++i) {
         const mf_real *n = normals_xyz + 3 * i;
         m->texels[i] = mf_leadr_with_roughness(mf_leadr_from_normal(mf_vec3_make(n[0], n[1], n[2])), alpha_x, alpha_y);
