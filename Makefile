@@ -14,7 +14,7 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 
-.PHONY: fuzz fuzz-smoke fuzz-build
+.PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
         header header-check config-check ltc-table
 
@@ -88,6 +88,12 @@ asan: | $(BUILD)
 	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_f.o -o $(BUILD)/asan_double -lm
 	$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMFT_OTHER=double -I. -Itests $(TEST_SRC) $(BUILD)/asan_ref_d.o -o $(BUILD)/asan_float -lm
 	@sh tests/run_all.sh "" $(BUILD)/asan_double $(BUILD)/asan_float
+
+# make test runs this: the NaN/Inf robustness subset built with -ffast-math
+# (tests/fastmath_check.c), float and double
+fastmath-check: | $(BUILD)
+	@$(CC) -std=c99 -O2 -ffast-math $(TWARN) -I. tests/fastmath_check.c -o $(BUILD)/fastmath_f -lm && ./$(BUILD)/fastmath_f >/dev/null
+	@$(CC) -std=c99 -O2 -ffast-math $(TWARN) -DMF_USE_DOUBLE -I. tests/fastmath_check.c -o $(BUILD)/fastmath_d -lm && ./$(BUILD)/fastmath_d >/dev/null
 
 # ---- libFuzzer targets (tests/fuzz/): clang with -fsanitize=fuzzer,address,
 # ---- undefined. `make fuzz` runs each for FUZZ_TIME seconds in float and in

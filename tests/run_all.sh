@@ -8,6 +8,8 @@ if [ -n "$make_cmd" ]; then
   else failed=$((failed + 1)); echo "FAIL header check"; fi
   if $make_cmd --no-print-directory config-check; then passed=$((passed + 1))
   else failed=$((failed + 1)); echo "FAIL config check"; fi
+  if $make_cmd --no-print-directory fastmath-check; then passed=$((passed + 1)); echo "fast-math check: ok (NaN/Inf data never index memory under -ffast-math)"
+  else failed=$((failed + 1)); echo "FAIL fast-math check (build/fastmath_f, build/fastmath_d)"; fi
   fz=$($make_cmd --no-print-directory -s fuzz-smoke 2>&1)
   printf '%s\n' "$fz"
   passed=$((passed + $(printf '%s\n' "$fz" | grep -c '^fuzz ok')))
