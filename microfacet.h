@@ -4454,11 +4454,11 @@ MFDEF mf_result mf_tabulated_build(mf_tabulated *t, const mf_real *theta, const 
     if (!theta || !D_x || n < 2 || n > MF_TABULATED_MAX_POINTS) return MF_ERROR_INVALID_ARGUMENT;
     h = hpi / (mf_real)(n - 1);
     for (i = 0; i < n; ++i) {
-        if (!(MF_FABS(theta[i]) < MF_R(10.0))) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(theta[i]) || !(MF_FABS(theta[i]) < MF_R(10.0))) return MF_ERROR_INVALID_DATA;
         if (i > 0 && !mf__tab_gap_ok(i == 1 ? MF_R(0.0) : theta[i - 1], i == n - 1 ? hpi : theta[i]))
             return MF_ERROR_INVALID_DATA;   /* unordered, or too close once the ends are snapped */
-        if (!(D_x[i] >= MF_R(0.0) && D_x[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
-        if (D_y && !(D_y[i] >= MF_R(0.0) && D_y[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(D_x[i]) || !(D_x[i] >= MF_R(0.0) && D_x[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (D_y && (!mf__finite_bits(D_y[i]) || !(D_y[i] >= MF_R(0.0) && D_y[i] < MF_BIG))) return MF_ERROR_INVALID_DATA;
         if (D_y && D_y[i] != D_x[i]) aniso = 1;
         if (!(MF_FABS(theta[i] - h * (mf_real)i) <= MF_R(1e-4) * h)) uniform = 0;
     }
@@ -4709,7 +4709,7 @@ MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *height
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
     for (i = 0; i < w * h; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
     for (y = 0; y < h; ++y)
         for (x = 0; x < w; ++x) {
             size_t xp = (x + 1) % w, xm = (x + w - 1) % w, yp = (y + 1) % h, ym = (y + h - 1) % h;
@@ -8241,7 +8241,7 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)size * (size_t)size;
     for (i = 0; i < 2 * n2; ++i)
-        if (!(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(gradients_xy[i]) || !(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     mf__ms_zero(&m);
     m.n = size; m.n2 = n2;
     m.tx = (double *)MF_MALLOC(sizeof(double) * n2);
@@ -8529,7 +8529,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)n * (size_t)n;
     for (i = 0; i < n2; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     h = (double *)MF_MALLOC(sizeof(double) * n2);
     top = (double *)MF_MALLOC(sizeof(double) * n2);
     acc = (double *)MF_MALLOC(sizeof(double) * 2 * (size_t)g->cells);

@@ -416,7 +416,7 @@ MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *height
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
     for (i = 0; i < w * h; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
     for (y = 0; y < h; ++y)
         for (x = 0; x < w; ++x) {
             size_t xp = (x + 1) % w, xm = (x + w - 1) % w, yp = (y + 1) % h, ym = (y + h - 1) % h;

@@ -833,7 +833,7 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)size * (size_t)size;
     for (i = 0; i < 2 * n2; ++i)
-        if (!(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(gradients_xy[i]) || !(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     mf__ms_zero(&m);
     m.n = size; m.n2 = n2;
     m.tx = (double *)MF_MALLOC(sizeof(double) * n2);
@@ -1121,7 +1121,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)n * (size_t)n;
     for (i = 0; i < n2; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     h = (double *)MF_MALLOC(sizeof(double) * n2);
     top = (double *)MF_MALLOC(sizeof(double) * n2);
     acc = (double *)MF_MALLOC(sizeof(double) * 2 * (size_t)g->cells);

@@ -69,6 +69,27 @@ int main(void)
         mf_real a = mf_ltc_ggx_albedo(MF_R(0.5), nan);
         check(a >= MF_R(0.0) && a <= MF_R(1.0) && l.Minv[8] != MF_R(0.0), "ltc lookups with NaN: in the table");
     }
+    /* other builders: NaN data is invalid data */
+    {
+        mf_tabulated t;
+        mf_real th[3] = { 0, MF_R(0.7853981633974483), MF_R(1.5707963267948966) }, dx[3] = { 3, 2, 1 }, g[128], hh[64];
+        mf_gonio go;
+        mf_gonio_config c;
+        dx[1] = nan;
+        check(mf_tabulated_build(&t, th, dx, NULL, 3) == MF_ERROR_INVALID_DATA, "tabulated_build with a NaN value");
+        for (i = 0; i < 128; ++i) g[i] = 0;
+        g[5] = nan;
+        check(mf_microsurface_integrate(g, 8, hh) == MF_ERROR_INVALID_DATA, "microsurface_integrate with a NaN gradient");
+        for (i = 0; i < 64; ++i) hh[i] = 0;
+        hh[9] = nan;
+        if (mf_gonio_init(&go, 4) == MF_SUCCESS) {
+            mf_gonio_config_default(&c);
+            c.wi = mf_vec3_make(0, 0, 1);
+            c.rays = 100;
+            check(mf_gonio_measure(&go, hh, 8, &c) == MF_ERROR_INVALID_DATA, "gonio_measure with a NaN height");
+            mf_gonio_release(&go);
+        } else check(0, "gonio_init");
+    }
     /* microsurface: the iteration cap */
     {
         mf_ndf d = mf_beckmann(MF_R(0.3), MF_R(0.3));
