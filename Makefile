@@ -10,7 +10,8 @@ BUILD   := build
 TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/test_sampling.c \
             tests/test_brdf.c tests/test_ltmd.c tests/test_ltc.c tests/test_leadr.c \
             tests/test_tabulated.c tests/test_ibm.c tests/test_microsurface.c \
-            tests/test_materials.c tests/test_dielectric.c tests/test_robust.c tests/test_float.c tests/test_tu2.c
+            tests/test_materials.c tests/test_dielectric.c tests/test_robust.c tests/test_float.c tests/test_tu2.c \
+            tests/test_fuzzfound.c
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 # OpenEXR is optional (apt-get install libopenexr-dev): found through
@@ -29,8 +30,11 @@ else
 EXR_STEPS  := exr_skip
 endif
 
+.PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check config-check package-check ltc-table tools $(foreach s,header warnings config package readme examples exr_float exr_double exr_skip quick c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
+        header header-check config-check package-check ltc-table tools \
+        $(foreach s,header warnings config package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+          c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
 
@@ -122,7 +126,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header c_double c_float warnings config package readme examples $(EXR_STEPS) cpp_double cpp_float
+TEST_STEPS := header c_double c_float fuzz warnings config fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -159,6 +163,10 @@ step-exr_skip: | $(RES)
 tools:
 	@echo "tools: EXR skipped: OpenEXR not found (apt-get install libopenexr-dev), or EXR=no; nothing to build"
 endif
+step-fastmath: | $(RES)
+	@$(RUN_STEP) fastmath $(RES)/fastmath check $(MAKE) --no-print-directory fastmath-check
+step-fuzz: | $(RES)
+	@$(RUN_STEP) fuzz $(RES)/fuzz tests sh tests/fuzz/smoke.sh "$(MAKE)" $(BUILD)/fuzz $(FUZZ_SMOKE) $(FUZZ_TARGETS)
 step-readme: | $(RES)
 	@$(RUN_STEP) readme $(RES)/readme check sh tests/readme_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 step-package: | $(RES)
@@ -216,6 +224,46 @@ step-asan_float: $(BUILD)/asan_float | $(RES)
 	@$(RUN_STEP) asan_float $(RES)/asan_float tests ./$<
 asan: step-asan_double step-asan_float
 	@$(SUM) asan_double asan_float
+
+# make test runs this: the NaN/Inf robustness subset built with -ffast-math
+# (tests/fastmath_check.c), float and double
+fastmath-check: | $(BUILD)
+	@$(CC) -std=c99 -O2 -ffast-math $(TWARN) -I. tests/fastmath_check.c -o $(BUILD)/fastmath_f -lm && ./$(BUILD)/fastmath_f >/dev/null
+	@$(CC) -std=c99 -O2 -ffast-math $(TWARN) -DMF_USE_DOUBLE -I. tests/fastmath_check.c -o $(BUILD)/fastmath_d -lm && ./$(BUILD)/fastmath_d >/dev/null
+
+# ---- libFuzzer targets (tests/fuzz/): clang with -fsanitize=fuzzer,address,
+# ---- undefined. `make fuzz` runs each for FUZZ_TIME seconds in float and in
+# ---- double; make test runs each (float) for FUZZ_SMOKE seconds.
+FUZZ_TARGETS := generic ibm_load builders ltc
+FUZZ_TIME  ?= 60
+FUZZ_SMOKE ?= 2
+FUZZ_FLAGS := -std=c99 -g -O1 -fno-sanitize-recover=undefined -I. -Itests/fuzz
+FUZZ_PREC  ?= float double
+$(BUILD)/fuzz/impl_float.o: tests/fuzz/fuzz_impl.c microfacet.h
+	@mkdir -p $(BUILD)/fuzz
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+$(BUILD)/fuzz/impl_double.o: tests/fuzz/fuzz_impl.c microfacet.h
+	@mkdir -p $(BUILD)/fuzz
+	clang $(FUZZ_FLAGS) -DMF_USE_DOUBLE -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+$(BUILD)/fuzz/fuzz_%_float: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(BUILD)/fuzz/impl_float.o
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer,address,undefined $< $(BUILD)/fuzz/impl_float.o -o $@ -lm
+$(BUILD)/fuzz/fuzz_%_double: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_common.h $(BUILD)/fuzz/impl_double.o
+	clang $(FUZZ_FLAGS) -DMF_USE_DOUBLE -fsanitize=fuzzer,address,undefined $< $(BUILD)/fuzz/impl_double.o -o $@ -lm
+$(BUILD)/fuzz/make_seeds: tests/fuzz/make_seeds.c
+	@mkdir -p $(BUILD)/fuzz
+	$(CC) -std=c99 -O1 $(TWARN) $< -o $@
+fuzz-build: $(BUILD)/fuzz/make_seeds $(foreach p,$(FUZZ_PREC),$(foreach t,$(FUZZ_TARGETS),$(BUILD)/fuzz/fuzz_$(t)_$(p)))
+fuzz:
+ifeq ($(HAVE_CLANG),yes)
+	@$(MAKE) --no-print-directory fuzz-build
+	@sh tests/fuzz/run.sh $(BUILD)/fuzz $(FUZZ_TIME) "$(FUZZ_PREC)" $(FUZZ_TARGETS)
+else
+	@echo "fuzz: clang not found, skipped"
+endif
+# make test runs this: each target for FUZZ_SMOKE seconds (float), or one
+# line saying why it was skipped
+fuzz-smoke:
+	@sh tests/fuzz/smoke.sh "$(MAKE)" $(BUILD)/fuzz $(FUZZ_SMOKE) $(FUZZ_TARGETS)
 
 bench: | $(BUILD)
 	$(CC) -std=c99 -O2 $(WARN) -DMF_BENCH_FLAGS="\"-std=c99 -O2\"" -I. bench/bench.c -o $(BUILD)/bench -lm

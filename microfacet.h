@@ -93,7 +93,18 @@
  *     [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] = [1.55, 1000]
  *     (the mean slope, hence Lambda, exists only for gamma > 1.5).
  *   - Lambda(w) is symmetric in w.z (it uses |w.z|); at w.z = 0 it is large
- *     but finite (w.z^2 is clamped to 1e-30 inside the slope).
+ *     but finite (w.z^2 is clamped to 1e-30 inside the slope, alpha^2 tan^2
+ *     to 1e30). D, D_visible, the projected area, mf_brdf and mf_brdf_pdf are
+ *     capped at MF_BIG (1e30 in float): grazing retro-reflection and
+ *     transforms with tiny entries reach it. Random numbers outside [0, 1]
+ *     are clamped to it (NaN: 0). mf_brdf_sample returns a direction only
+ *     where mf_brdf_pdf is positive.
+ *   - Transforms: mf_transform_valid also requires |det M| > 1/MF_BIG, so
+ *     that M^-1 is finite in mf_real.
+ *   - LEADR moments: variances are clamped to [1e-8, 5e7] (alpha up to
+ *     MF_ALPHA_MAX); map builders reject normals with z < 1e-4.
+ *   - Microsurface generation: at most MF_MICROSURFACE_MAX_ITERATIONS =
+ *     100000 iterations (more is an invalid argument).
  *   - Tabulated distributions: control angles span [0, pi/2] (the ends are
  *     snapped within 1e-4 rad), at most MF_TABULATED_MAX_POINTS = 4096; D is
  *     linear in theta between them; Lambda interpolates a projected-area table
@@ -117,6 +128,19 @@
  *                           leave out a module (see section 1)
  *   MF_SQRT, MF_EXP, ...    every math call goes through a macro of this form;
  *                           define one to replace it (e.g. with an intrinsic)
+ *
+ * FAST MATH (-ffast-math, __FAST_MATH__)
+ *
+ *   The compiler may then assume that no value is NaN or Inf and fold the
+ *   comparisons this header uses to catch them. What still holds: builders
+ *   and loaders never let NaN or Inf data index memory (the IBM builder and
+ *   footprint queries test the bits of their floats, bin and texel indices
+ *   are clamped after conversion; tests/fastmath_check.c, run by make test,
+ *   checks this in float and double). What does not: the promise "0, never
+ *   NaN or Inf" for NaN or Inf arguments of the math functions (they may
+ *   propagate NaN), and results at the edges of the documented domains may
+ *   differ by more than the tested tolerances (the full test suite built
+ *   with -ffast-math is not expected to pass).
  *
  * ERROR MODEL
  *
@@ -524,9 +548,31 @@ MF_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 {
     return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x < lo ? lo : (x > hi ? hi : x); }
+/* x clamped to [lo, hi]; NaN gives lo */
+MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 MF_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
 MF_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+/* 1 if x is finite, read from its bits: -ffast-math (__FAST_MATH__) lets the
+ * compiler assume that no value is NaN or Inf and fold x == x, x - x == 0 or
+ * isnan(x) to true; the validation of data that may index memory uses this. */
+MF_INLINE int mf__finite_bits(mf_real x)
+{
+#ifdef MF_USE_DOUBLE
+    union { double d; unsigned char c[8]; } v;
+    union { unsigned int i; unsigned char c[4]; } e;
+    unsigned int hi;
+    v.d = x;
+    e.i = 1u;
+    hi = e.c[0] == 1u ? ((unsigned int)v.c[7] << 8 | v.c[6]) : ((unsigned int)v.c[0] << 8 | v.c[1]);
+    return (hi & 0x7ff0u) != 0x7ff0u;
+#else
+    union { float f; unsigned int u; } v;
+    v.f = x;
+    return (v.u & 0x7f800000u) != 0x7f800000u;
+#endif
+}
+/* x capped at MF_BIG; NaN becomes 0 (the results that may overflow float) */
+MF_INLINE mf_real mf__cap(mf_real x) { return x < MF_BIG ? x : (x == x ? MF_BIG : MF_R(0.0)); }
 
 /* Unit vector along v; the zero vector when v is zero (or not finite). */
 MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)
@@ -966,11 +1012,15 @@ MF_INLINE mf_real mf__q(mf_real ax, mf_real ay, mf_vec3 m)
     return x * x + y * y;
 }
 
-/* alpha_w^2 tan^2(theta) = 1/a^2, with w.z clamped so the horizon stays finite */
+/* alpha_w^2 tan^2(theta) = 1/a^2, with w.z clamped so the horizon stays
+ * finite, capped at MF_A2T2_MAX (alpha 1e4 under a stretch at the horizon
+ * overflows float; NaN gives the cap too), so the Lambdas never see inf/inf */
+#define MF_A2T2_MAX MF_R(1e30)
 MF_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real x = ax * w.x, y = ay * w.y;
-    return (x * x + y * y) / mf_max(w.z * w.z, MF_R(1e-30));
+    mf_real r = (x * x + y * y) / mf_max(w.z * w.z, MF_R(1e-30));
+    return r < MF_A2T2_MAX ? r : MF_A2T2_MAX;
 }
 
 /* wm from an unstretched slope direction (cos phi, sin phi) and squared unit
@@ -1188,6 +1238,9 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     mf_real a, L, k;
     a = mf__clamp_alpha(alpha);
     if (a > MF_R(1.0)) a = MF_R(1.0);
+    /* the bits: under -ffast-math the comparisons let NaN through, and the
+     * spline below indexes by gamma */
+    if (!mf__finite_bits(gamma)) gamma = MF_R(0.0);
     gamma = gamma > MF_R(0.0) ? (gamma < MF_R(4.0) ? gamma : MF_R(4.0)) : MF_R(0.0);
     d = mf__ndf_init(MF_NDF_GTR, a, a);
     p = &d.p.gtr;
@@ -1378,12 +1431,14 @@ MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real
  * M (or with a non-finite entry) is not invertible enough to define a surface. */
 #define MF_TRANSFORM_MIN_DET MF_R(1e-9)
 
-/* 1 if M can transform a microsurface (finite, |det| above the threshold). */
+/* 1 if M can transform a microsurface (finite, |det| above the threshold,
+ * and |det| > 1/MF_BIG so that 1/det and with it M^-1 stay finite in mf_real:
+ * diag(1e-20, 1e-20) passes the relative test but not this one in float). */
 MF_INLINE int mf_transform_valid(mf_mat2 M)
 {
     mf_real n2 = M.m00 * M.m00 + M.m01 * M.m01 + M.m10 * M.m10 + M.m11 * M.m11;
     mf_real det = MF_FABS(mf_mat2_det(M));
-    return n2 < MF_BIG && det < MF_BIG && det > MF_TRANSFORM_MIN_DET * n2;
+    return n2 < MF_BIG && det < MF_BIG && det > MF_TRANSFORM_MIN_DET * n2 && det * MF_BIG > MF_R(1.0);
 }
 
 /* The distribution of the microsurface transformed by M (row-major, acting
@@ -1460,9 +1515,12 @@ MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 /* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
 MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
 {
+    mf_real r;
     if (!d->transformed) return mf__D_base(d, wm);
-    /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m) */
-    return d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
+    /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m),
+     * capped at MF_BIG (a small M makes |M^T m|^-4 overflow) */
+    r = d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
+    return mf__cap(r);
 }
 
 /* Deformation tracking (thesis Sec. 4.4.1). The tension matrix T = D R^-1 maps
@@ -1606,9 +1664,9 @@ MF_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
 MF_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
 {
     mf_real cz;
-    if (d->type == MF_NDF_LEADR) return mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w));
+    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w)));
     cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
-    return cz + cz * mf_lambda(d, w);
+    return mf__cap(cz + cz * mf_lambda(d, w));
 }
 
 /* Distribution of visible normals (Heitz & d'Eon 2014 Eq. 2):
@@ -1617,7 +1675,7 @@ MF_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
 {
     mf_real c = mf_dot(w, wm);
     if (w.z < MF_R(0.0) || !(c > MF_R(0.0))) return MF_R(0.0);
-    return c * mf_D(d, wm) / mf_projected_area(d, w);
+    return mf__cap(c * mf_D(d, wm) / mf_projected_area(d, w));
 }
 /* ======================================================================== */
 /* == 10. Sampling                                                          */
@@ -1636,11 +1694,16 @@ MF_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *             sample, no rejection, deterministic; about 50-100x the cost of
  *             GGX (see make bench). */
 
+/* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
+MF_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
+
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
 MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_vec3 m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
+    mf_vec3 m;
+    u1 = mf__u01(u1); u2 = mf__u01(u2);
+    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
               : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
     if (!d->transformed) return m;
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
@@ -1652,6 +1715,7 @@ MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
+    u1 = mf__u01(u1); u2 = mf__u01(u2);
     if (!d->transformed) {
         if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
         return mf__ndf_sample_visible(d, w, u1, u2);
@@ -1689,27 +1753,35 @@ MF_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     }
 }
 
-/* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. */
+MF_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi);
+
+/* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. A wi is
+ * returned only where mf_brdf_pdf is positive (rounding can put a sampled
+ * normal where D underflows to 0, e.g. Beckmann 0.01 at u = (0, 0)). */
 MF_INLINE mf_vec3 mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
     mf_vec3 wm, wi;
     if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     wm = mf_sample_visible(d, wo, u1, u2);
     wi = mf_reflect(wo, wm);
-    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y) ||
+        !(mf_brdf_pdf(d, wo, wi) > MF_R(0.0)))
+        return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     return wi;
 }
 
-/* Density of mf_brdf_sample per unit solid angle of wi. */
+/* Density of mf_brdf_sample per unit solid angle of wi; capped at MF_BIG
+ * (near the horizon D_visible / (4 wo.wh) overflows float). */
 MF_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
     mf_vec3 wh;
-    mf_real c;
+    mf_real c, p;
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     wh = mf_normalize(mf_add(wo, wi));
     c = mf_dot(wo, wh);
     if (!(c > MF_R(0.0))) return MF_R(0.0);
-    return mf_D_visible(d, wo, wh) / (MF_R(4.0) * c);
+    p = mf_D_visible(d, wo, wh) / (MF_R(4.0) * c);
+    return mf__cap(p);
 }
 
 /* f(wo, wi) wi.z / pdf(wi) for a wi from mf_brdf_sample: G2 / G1(wo)
@@ -2198,12 +2270,15 @@ MF_INLINE mf_real mf_leadr_diffuse_sh9(mf_leadr a, mf_vec3 wo, const mf_real sh[
     return den > MF_R(0.0) ? num / (MF_PI * den) : MF_R(0.0);
 }
 
-/* Covariance (Eq. 9) with its validity guard: variances at least
- * MF_LEADR_MIN_VARIANCE and |correlation| at most MF_LEADR_MAX_CORRELATION
- * (filtering and float round-off can break both). Returns 1 if the moments
- * were valid as given, 0 if the guard changed them (non-finite moments give an
- * isotropic variance of MF_LEADR_MIN_VARIANCE). */
+/* Covariance (Eq. 9) with its validity guard: variances in
+ * [MF_LEADR_MIN_VARIANCE, MF_LEADR_MAX_VARIANCE] and |correlation| at most
+ * MF_LEADR_MAX_CORRELATION (filtering and float round-off can break the
+ * first and last; the upper bound, alpha = sqrt(2 var) = MF_ALPHA_MAX, keeps
+ * the determinant and D finite in float). Returns 1 if the moments were valid
+ * as given, 0 if the guard changed them (non-finite moments give an isotropic
+ * variance of MF_LEADR_MIN_VARIANCE). */
 #define MF_LEADR_MIN_VARIANCE MF_R(1e-8)
+#define MF_LEADR_MAX_VARIANCE MF_R(5e7)
 #define MF_LEADR_MAX_CORRELATION MF_R(0.999)
 MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
 {
@@ -2212,6 +2287,8 @@ MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf
     if (!(sx < MF_BIG) || !(sy < MF_BIG) || !(MF_FABS(c) < MF_BIG)) { sx = sy = MF_LEADR_MIN_VARIANCE; c = MF_R(0.0); ok = 0; }
     if (!(sx >= MF_LEADR_MIN_VARIANCE)) { sx = MF_LEADR_MIN_VARIANCE; ok = 0; }
     if (!(sy >= MF_LEADR_MIN_VARIANCE)) { sy = MF_LEADR_MIN_VARIANCE; ok = 0; }
+    if (sx > MF_LEADR_MAX_VARIANCE) { sx = MF_LEADR_MAX_VARIANCE; ok = 0; }
+    if (sy > MF_LEADR_MAX_VARIANCE) { sy = MF_LEADR_MAX_VARIANCE; ok = 0; }
     lim = MF_LEADR_MAX_CORRELATION * MF_SQRT(sx * sy);
     if (MF_FABS(c) > lim) { c = c > MF_R(0.0) ? lim : -lim; ok = 0; }
     if (var_x) *var_x = sx;
@@ -2258,7 +2335,11 @@ MF_INLINE mf_leadr mf_leadr_map_lookup(const mf_leadr_map *m, mf_real u, mf_real
     mf_real lod, f;
     int l0;
     if (!m || !m->texels || m->levels < 1 || !(u == u) || !(v == v)) return mf__leadr_make(0, 0, 0, 0, 0);
-    u -= (mf_real)(int)u; v -= (mf_real)(int)v;   /* keep the coordinates small; wrap happens per texel */
+    /* keep the coordinates small (wrap happens per texel); beyond 2^23 every
+     * float is an integer, and an infinite coordinate goes to the edge 0:
+     * no out-of-range conversion to int */
+    u = MF_FABS(u) < MF_R(8388608.0) ? u - (mf_real)(int)u : MF_R(0.0);
+    v = MF_FABS(v) < MF_R(8388608.0) ? v - (mf_real)(int)v : MF_R(0.0);
     lod = footprint > MF_R(0.0) ? MF_LOG(footprint * (mf_real)(m->width > m->height ? m->width : m->height)) * MF_R(1.4426950408889634) : MF_R(0.0);
     lod = mf_clamp(lod, MF_R(0.0), (mf_real)(m->levels - 1));
     l0 = (int)lod;
@@ -2272,10 +2353,14 @@ MF_INLINE mf_leadr mf_leadr_map_lookup(const mf_leadr_map *m, mf_real u, mf_real
  * the slope along u is (h[x+1] - h[x-1]) width / 2, periodic) or from a normal
  * map (unit normals, 3 per texel, z > 0), plus a base microsurface roughness
  * (alpha_x, alpha_y added as alpha^2/2 to the variances). Row-major, rows top
- * to bottom. width and height must be powers of two. Errors: NULL or zero size
- * or non-power-of-two (MF_ERROR_INVALID_ARGUMENT), NaN heights or invalid
- * normals (MF_ERROR_INVALID_DATA), allocation (MF_ERROR_OUT_OF_MEMORY);
- * nothing stays allocated on failure. */
+ * to bottom. width and height must be powers of two, at most 2^15. Errors:
+ * NULL or zero size or non-power-of-two, alpha NaN, negative or above
+ * MF_ALPHA_MAX (MF_ERROR_INVALID_ARGUMENT); non-finite heights or slopes
+ * whose square exceeds MF_BIG / 4, invalid normals - not unit within 1e-3,
+ * or z below MF_LEADR_MIN_NORMAL_Z, whose slope variance would overflow -
+ * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY); nothing
+ * stays allocated on failure. */
+#define MF_LEADR_MIN_NORMAL_Z MF_R(1e-4)
 MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *heights, int width, int height,
                                           mf_real alpha_x, mf_real alpha_y);
 MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normals_xyz, int width, int height,
@@ -2308,16 +2393,34 @@ MF_INLINE mf_vec3 mf__mat3_apply(const mf_real *a, mf_vec3 v)
                         a[6] * v.x + a[7] * v.y + a[8] * v.z);
 }
 
-/* Inverse of a row-major 3x3 matrix; returns its determinant (0: singular). */
+/* A 3x3 matrix is singular for the LTC code when |det| is at most
+ * MF_LTC_MIN_DET_REL times the product of its row lengths (Hadamard's bound:
+ * the ratio is 1 for orthogonal rows, scale-free, and a rounding-level
+ * remainder for parallel rows: float gives 4e-7 for two equal rows of
+ * 4.9609375, which an absolute test accepted). */
+#ifdef MF_USE_DOUBLE
+#define MF_LTC_MIN_DET_REL 1e-12
+#else
+#define MF_LTC_MIN_DET_REL 1e-5f
+#endif
+
+/* Inverse of a row-major 3x3 matrix; returns its determinant (0: singular,
+ * not finite, or an inverse that is not finite). */
 MF_INLINE mf_real mf__mat3_inverse(const mf_real *a, mf_real *inv)
 {
     mf_real c0 = a[4] * a[8] - a[5] * a[7], c1 = a[5] * a[6] - a[3] * a[8], c2 = a[3] * a[7] - a[4] * a[6];
-    mf_real det = a[0] * c0 + a[1] * c1 + a[2] * c2, r;
+    mf_real det = a[0] * c0 + a[1] * c1 + a[2] * c2, r, rel, s = MF_R(0.0);
+    int i;
     if (!(det != MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return MF_R(0.0);
+    rel = MF_FABS(det) / MF_SQRT(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) / MF_SQRT(a[3] * a[3] + a[4] * a[4] + a[5] * a[5]) /
+          MF_SQRT(a[6] * a[6] + a[7] * a[7] + a[8] * a[8]);
+    if (!(rel > MF_LTC_MIN_DET_REL)) return MF_R(0.0);
     r = MF_R(1.0) / det;
     inv[0] = c0 * r; inv[1] = (a[2] * a[7] - a[1] * a[8]) * r; inv[2] = (a[1] * a[5] - a[2] * a[4]) * r;
     inv[3] = c1 * r; inv[4] = (a[0] * a[8] - a[2] * a[6]) * r; inv[5] = (a[2] * a[3] - a[0] * a[5]) * r;
     inv[6] = c2 * r; inv[7] = (a[1] * a[6] - a[0] * a[7]) * r; inv[8] = (a[0] * a[4] - a[1] * a[3]) * r;
+    for (i = 0; i < 9; ++i) s += MF_FABS(inv[i]);
+    if (!(s < MF_BIG)) return MF_R(0.0);
     return det;
 }
 
@@ -2330,7 +2433,7 @@ MF_INLINE mf_ltc mf_ltc_from_matrix9(const mf_real m[9])
     int i;
     for (i = 0; i < 9; ++i) l.M[i] = m[i];
     det = mf__mat3_inverse(l.M, l.Minv);
-    if (!(MF_FABS(det) > MF_R(1e-20))) {
+    if (!(MF_FABS(det) * MF_BIG > MF_R(1.0))) {   /* singular, or 1/det overflows */
         for (i = 0; i < 9; ++i) l.M[i] = l.Minv[i] = (i % 4 == 0) ? MF_R(1.0) : MF_R(0.0);
         det = MF_R(1.0);
     }
@@ -2361,7 +2464,7 @@ MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d,
     inv[2][0] = d; inv[2][1] = 0; inv[2][2] = e;
     for (i = 0; i < 9; ++i) m[i] = inv[i / 3][i % 3];
     det = mf__mat3_inverse(m, l.M);
-    if (!(MF_FABS(det) > MF_R(1e-20))) {
+    if (!(MF_FABS(det) > MF_R(0.0))) {
         const mf_real I[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
         return mf_ltc_from_matrix9(I);
     }
@@ -2376,7 +2479,7 @@ MF_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
     mf_vec3 v = mf__mat3_apply(l->Minv, w);
     mf_real l2 = mf_dot(v, v);
     if (!(v.z > MF_R(0.0)) || !(l2 > MF_R(0.0))) return MF_R(0.0);
-    return l->det_inv * v.z / (MF_PI * l2 * l2);
+    return mf__cap(l->det_inv * v.z / (MF_PI * l2 * l2));
 }
 
 /* A direction with density mf_ltc_eval: a cosine-distributed direction moved by M. */
@@ -2706,8 +2809,11 @@ MF_INLINE unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
 MF_INLINE int mf__ibm_cell(mf_real v, int b)
 {
     mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
+    int c;
     if (!(f > MF_R(0.0))) return 0;              /* also NaN */
-    return f >= (mf_real)b ? b - 1 : (int)f;     /* truncation = floor for f > 0 */
+    if (f >= (mf_real)b) return b - 1;
+    c = (int)f;                                  /* truncation = floor for f > 0 */
+    return c >= 0 && c < b ? c : 0;              /* in range even where -ffast-math let NaN through */
 }
 
 /* b*b: the number of bins (those outside the unit disk stay empty). */
@@ -2801,6 +2907,7 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
                                 mf_real u3, mf_real u4);
 
 /* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
+#define MF_IBM_MIN_CUT MF_R(0.1)
 /* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
  * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
  * normalized before binning), row-major, texel (x, y) at index y*width + x.
@@ -2809,7 +2916,8 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
  * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
  * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
- * and the cut in sigmas (0: 3); the neighbourhood radius r grows with b so
+ * and the cut in sigmas (0: 3, else in [MF_IBM_MIN_CUT, 10]: a cut that
+ * rounds to 0 in float would not reload); the neighbourhood radius r grows with b so
  * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
  * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
  * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
@@ -2867,7 +2975,7 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
  * different samples). d must be centered
  * (every periodic surface has mean slope 0): a LEADR distribution with a
  * non-zero mean slope is rejected. Errors: NULL pointers, bad size, negative
- * iterations, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
+ * iterations or more than MF_MICROSURFACE_MAX_ITERATIONS, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
  * (MF_ERROR_OUT_OF_MEMORY); nothing stays allocated on failure. */
 /* 64-bit seeds: unsigned long long (C99, C++11; C++98 compilers accept it
  * as an extension, quietly here) */
@@ -2882,6 +2990,9 @@ typedef unsigned long long mf_u64;
 #define MF_MICROSURFACE_MIN_SIZE 8
 #define MF_MICROSURFACE_MAX_SIZE 4096
 #define MF_MICROSURFACE_THRESHOLD MF_R(0.02)
+/* the most re-matching iterations a call accepts (the paper uses 500; at
+ * 4096^2 this cap is about 5 days of one core): more is an invalid argument */
+#define MF_MICROSURFACE_MAX_ITERATIONS 100000
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
 
@@ -4152,19 +4263,23 @@ MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, int row, const mf_real *x
 MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
 {
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
-    int row, pieces = 0;
+    int row, pieces = 0, edges_ok;
     p->mode = MF__IBM_NONE;
     p->direct = 0;
     p->full = MF_R(0.0);
     if (!f) return;
+    /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
+    if (!mf__finite_bits(f->u) || !mf__finite_bits(f->v)) return;
+    edges_ok = mf__finite_bits(f->ax) && mf__finite_bits(f->ay) && mf__finite_bits(f->bx) && mf__finite_bits(f->by);
     p->cx = f->u * W; p->cy = f->v * H;
     if (!(MF_FABS(p->cx) < MF_BIG) || !(MF_FABS(p->cy) < MF_BIG)) return;
     p->cx -= W * MF_FLOOR(p->cx / W);
     p->cy -= H * MF_FLOOR(p->cy / H);
     if (!(p->cx >= MF_R(0.0)) || !(p->cx < W)) p->cx = MF_R(0.0);   /* rounding at the period edge */
     if (!(p->cy >= MF_R(0.0)) || !(p->cy < H)) p->cy = MF_R(0.0);
-    p->tx = (int)p->cx; if (p->tx >= ibm->width) p->tx = ibm->width - 1;
-    p->ty = (int)p->cy; if (p->ty >= ibm->height) p->ty = ibm->height - 1;
+    p->tx = (int)p->cx; if (p->tx >= ibm->width || p->tx < 0) p->tx = p->tx < 0 ? 0 : ibm->width - 1;
+    p->ty = (int)p->cy; if (p->ty >= ibm->height || p->ty < 0) p->ty = p->ty < 0 ? 0 : ibm->height - 1;
+    if (!edges_ok) { p->mode = MF__IBM_POINT; return; }
     p->ax = f->ax * W; p->ay = f->ay * H; p->bx = f->bx * W; p->by = f->by * H;
     cross = p->ax * p->by - p->ay * p->bx;
     p->area = MF_FABS(cross);
@@ -4357,18 +4472,22 @@ MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, mf__ibm_set *s, unsigned int v
     return k;
 }
 
-/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin). */
-MF_INLINE void mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
+/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin); returns the
+ * piece's area as the texel areas add up (every bin, listed or not). */
+MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
 {
+    mf_real tot = MF_R(0.0);
     int x, y;
     for (y = pc->by0; y < pc->by1; ++y)
         for (x = pc->bx0; x < pc->bx1; ++x) {
             mf_real a = mf__ibm_texel_area(pc, x, y);
             int k;
             if (!(a > MF_R(0.0))) continue;
+            tot += a;
             k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)y * (size_t)ibm->width + (size_t)x, ibm->bin_bits));
             if (k >= 0) s->w[k] += a;
         }
+    return tot;
 }
 
 /* first index in [s, e) whose Morton code has bit `bit` set */
@@ -4468,7 +4587,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * bin once, the pieces by direct sum or kd traversal, all divided by |A|. */
 MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
-    mf_real tot;
+    mf_real tot, dtot = MF_R(0.0);
     int i;
     if (p->mode == MF__IBM_NONE) { for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0); return; }
     if (p->mode == MF__IBM_POINT) {
@@ -4495,7 +4614,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
                 if (col >= f0 && col <= f1) continue;
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
                 tot += mf__ibm_shoelace(pc.x, pc.y, pc.n);
-                if (p->direct) mf__ibm_direct(ibm, &pc, s);
+                if (p->direct) dtot += mf__ibm_direct(ibm, &pc, s);
                 else
                     for (i = 0; i < s->n; i += MF_IBM_BATCH)
                         mf__ibm_traverse(ibm, &pc, s->bin + i, s->n - i < MF_IBM_BATCH ? s->n - i : MF_IBM_BATCH, s->w + i);
@@ -4503,7 +4622,11 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         }
     }
     /* |A| as the pieces add up, so that the weights of all bins sum to 1 even
-     * where float round-off moves the corners of a thin footprint */
+     * where float round-off moves the corners of a thin footprint; in the
+     * direct sum, as the texel areas themselves add up (the clipped texels
+     * and the shoelace of the pieces round differently: on a flat map, where
+     * one bin holds every texel, the weight is then exactly 1) */
+    if (p->direct && dtot > MF_R(0.0)) tot = dtot;
     if (!(tot > MF_R(0.0))) tot = p->area;
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
@@ -4756,11 +4879,11 @@ MFDEF mf_result mf_tabulated_build(mf_tabulated *t, const mf_real *theta, const 
     if (!theta || !D_x || n < 2 || n > MF_TABULATED_MAX_POINTS) return MF_ERROR_INVALID_ARGUMENT;
     h = hpi / (mf_real)(n - 1);
     for (i = 0; i < n; ++i) {
-        if (!(MF_FABS(theta[i]) < MF_R(10.0))) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(theta[i]) || !(MF_FABS(theta[i]) < MF_R(10.0))) return MF_ERROR_INVALID_DATA;
         if (i > 0 && !mf__tab_gap_ok(i == 1 ? MF_R(0.0) : theta[i - 1], i == n - 1 ? hpi : theta[i]))
             return MF_ERROR_INVALID_DATA;   /* unordered, or too close once the ends are snapped */
-        if (!(D_x[i] >= MF_R(0.0) && D_x[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
-        if (D_y && !(D_y[i] >= MF_R(0.0) && D_y[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(D_x[i]) || !(D_x[i] >= MF_R(0.0) && D_x[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (D_y && (!mf__finite_bits(D_y[i]) || !(D_y[i] >= MF_R(0.0) && D_y[i] < MF_BIG))) return MF_ERROR_INVALID_DATA;
         if (D_y && D_y[i] != D_x[i]) aniso = 1;
         if (!(MF_FABS(theta[i] - h * (mf_real)i) <= MF_R(1e-4) * h)) uniform = 0;
     }
@@ -4964,6 +5087,8 @@ static mf_result mf__leadr_alloc(mf_leadr_map *m, int w, int h)
         if (ww == 1 && hh == 1) break;
         ww = ww > 1 ? ww / 2 : 1; hh = hh > 1 ? hh / 2 : 1;
     }
+    /* at most 2^30 * 4/3 texels (sizes up to 2^15): check the bytes anyway */
+    if (total > (size_t)-1 / sizeof(mf_leadr)) return MF_ERROR_OUT_OF_MEMORY;
     m->texels = (mf_leadr *)MF_MALLOC(sizeof(mf_leadr) * total);
     return m->texels ? MF_SUCCESS : MF_ERROR_OUT_OF_MEMORY;
 }
@@ -4974,11 +5099,11 @@ static void mf__leadr_reduce(mf_leadr_map *m)
 {
     int l;
     for (l = 1; l < m->levels; ++l) {
-        int pw = mf__leadr_level_w(m, l - 1), ph = mf__leadr_level_h(m, l - 1);
-        int w = mf__leadr_level_w(m, l), h = mf__leadr_level_h(m, l), x, y;
+        size_t pw = (size_t)mf__leadr_level_w(m, l - 1), ph = (size_t)mf__leadr_level_h(m, l - 1);
+        size_t w = (size_t)mf__leadr_level_w(m, l), h = (size_t)mf__leadr_level_h(m, l), x, y;
         const mf_leadr *src = m->texels + m->offset[l - 1];
         mf_leadr *dst = m->texels + m->offset[l];
-        int sx = pw > w ? 2 : 1, sy = ph > h ? 2 : 1;
+        size_t sx = pw > w ? 2 : 1, sy = ph > h ? 2 : 1;
         for (y = 0; y < h; ++y)
             for (x = 0; x < w; ++x) {
                 mf_leadr acc = src[(y * sy) * pw + x * sx];
@@ -4992,26 +5117,35 @@ static void mf__leadr_reduce(mf_leadr_map *m)
     }
 }
 
+/* the base roughness: finite, 0 to MF_ALPHA_MAX */
+MF_INLINE int mf__leadr_alpha_ok(mf_real a) { return a >= MF_R(0.0) && a <= MF_ALPHA_MAX; }
+
 MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *heights, int width, int height,
                                           mf_real alpha_x, mf_real alpha_y)
 {
-    int x, y;
+    size_t x, y, w = (size_t)width, h = (size_t)height, i;
     mf_result r;
     if (!m) return MF_ERROR_INVALID_ARGUMENT;
     m->texels = 0; m->width = m->height = m->levels = 0;
-    if (!heights || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15))
+    if (!heights || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
+        !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
-    for (x = 0; x < width * height; ++x)
-        if (!(MF_FABS(heights[x]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+    /* allocation first: a size the allocator refuses never reads the data */
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
-    for (y = 0; y < height; ++y)
-        for (x = 0; x < width; ++x) {
-            int xp = (x + 1) % width, xm = (x + width - 1) % width, yp = (y + 1) % height, ym = (y + height - 1) % height;
+    for (i = 0; i < w * h; ++i)
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
+    for (y = 0; y < h; ++y)
+        for (x = 0; x < w; ++x) {
+            size_t xp = (x + 1) % w, xm = (x + w - 1) % w, yp = (y + 1) % h, ym = (y + h - 1) % h;
             /* rows run top to bottom, v grows downward with the row index */
-            mf_real su = (heights[y * width + xp] - heights[y * width + xm]) * (mf_real)width * MF_R(0.5);
-            mf_real sv = (heights[yp * width + x] - heights[ym * width + x]) * (mf_real)height * MF_R(0.5);
-            m->texels[y * width + x] = mf_leadr_with_roughness(mf_leadr_from_slope(su, sv), alpha_x, alpha_y);
+            mf_real su = (heights[y * w + xp] - heights[y * w + xm]) * (mf_real)width * MF_R(0.5);
+            mf_real sv = (heights[yp * w + x] - heights[ym * w + x]) * (mf_real)height * MF_R(0.5);
+            if (!(su * su < MF_R(0.25) * MF_BIG) || !(sv * sv < MF_R(0.25) * MF_BIG)) {
+                mf_leadr_map_release(m);
+                return MF_ERROR_INVALID_DATA;
+            }
+            m->texels[y * w + x] = mf_leadr_with_roughness(mf_leadr_from_slope(su, sv), alpha_x, alpha_y);
         }
     mf__leadr_reduce(m);
     return MF_SUCCESS;
@@ -5020,20 +5154,24 @@ MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *height
 MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normals_xyz, int width, int height,
                                           mf_real alpha_x, mf_real alpha_y)
 {
-    int i;
+    size_t i, n_texels = (size_t)width * (size_t)height;
     mf_result r;
     if (!m) return MF_ERROR_INVALID_ARGUMENT;
     m->texels = 0; m->width = m->height = m->levels = 0;
-    if (!normals_xyz || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15))
+    if (!normals_xyz || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
+        !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
-    for (i = 0; i < width * height; ++i) {
-        const mf_real *n = normals_xyz + 3 * i;
-        mf_real l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        if (!(n[2] > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) return MF_ERROR_INVALID_DATA;
-    }
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
-    for (i = 0; i < width * height; ++i) {
+    for (i = 0; i < n_texels; ++i) {
+        const mf_real *n = normals_xyz + 3 * i;
+        mf_real l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (!(n[2] >= MF_LEADR_MIN_NORMAL_Z) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+            mf_leadr_map_release(m);
+            return MF_ERROR_INVALID_DATA;
+        }
+    }
+    for (i = 0; i < n_texels; ++i) {
         const mf_real *n = normals_xyz + 3 * i;
         m->texels[i] = mf_leadr_with_roughness(mf_leadr_from_normal(mf_vec3_make(n[0], n[1], n[2])), alpha_x, alpha_y);
     }
@@ -5301,9 +5439,18 @@ MFDEF void mf_ltc_table_release(mf_ltc_table *t)
 static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_theta_o, mf_real alpha,
                              mf_real *albedo, mf_real *fresnel)
 {
-    mf_real ct = mf_clamp(cos_theta_o, MF_R(0.0), MF_R(1.0)), a = mf_clamp(alpha, MF_R(0.0), MF_R(1.0));
-    mf_real x = MF_SQRT(MF_R(1.0) - ct) * (mf_real)(nt - 1), y = MF_SQRT(a) * (mf_real)(na - 1), fx, fy, v[6];
-    int ix = (int)x, iy = (int)y, k;
+    mf_real ct, a, x, y, fx, fy, v[6];
+    int ix, iy, k;
+    if (!(cos_theta_o == cos_theta_o) || !(alpha == alpha)) {
+        /* NaN: no lookup (its conversion to int is undefined) */
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        if (albedo) *albedo = MF_R(0.0);
+        if (fresnel) *fresnel = MF_R(0.0);
+        return mf_ltc_from_matrix9(I9);
+    }
+    ct = mf_clamp(cos_theta_o, MF_R(0.0), MF_R(1.0)); a = mf_clamp(alpha, MF_R(0.0), MF_R(1.0));
+    x = MF_SQRT(MF_R(1.0) - ct) * (mf_real)(nt - 1); y = MF_SQRT(a) * (mf_real)(na - 1);
+    ix = (int)x; iy = (int)y;
     if (ix > nt - 2) ix = nt - 2;
     if (iy > na - 2) iy = na - 2;
     if (ix < 0) ix = 0;
@@ -7541,7 +7688,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     mf__ibm_zero(ibm);
     mf__ibm_zero(&L);
     if (!normals_xyz || width < 1 || width > 16384 || height < 1 || height > 16384 || !(flake_alpha > MF_R(0.0)) ||
-        resolution < 0 || resolution > MF_IBM_MAX_RES || !(cut_sigmas >= MF_R(0.0)) || !(cut_sigmas <= MF_R(10.0)))
+        resolution < 0 || resolution > MF_IBM_MAX_RES || !(cut_sigmas >= MF_R(0.0)) || !(cut_sigmas <= MF_R(10.0)) ||
+        (cut_sigmas > MF_R(0.0) && cut_sigmas < MF_IBM_MIN_CUT))
         return MF_ERROR_INVALID_ARGUMENT;
     alpha = mf__ibm_bitsf(mf__ibm_fbits(mf__clamp_alpha(flake_alpha)));
     cut = mf__ibm_bitsf(mf__ibm_fbits(cut_sigmas > MF_R(0.0) ? cut_sigmas : MF_R(3.0)));
@@ -7587,7 +7735,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     mf_real nz, l2, il;
                     if (tx >= width || ty >= height) continue;
                     nx = nv[0]; ny = nv[1]; nz = nv[2]; l2 = nx * nx + ny * ny + nz * nz;
-                    if (!(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+                    if (!mf__finite_bits(nx) || !mf__finite_bits(ny) || !mf__finite_bits(nz) ||
+                        !(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
                         MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
                         return MF_ERROR_INVALID_DATA;
                     }
@@ -8407,7 +8556,7 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
         stats->rms_target = stats->rms_central = stats->rms_triangle = MF_R(0.0);
     }
     if (!d || !o || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
-        o->iterations < 0 || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
+        o->iterations < 0 || o->iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
         !(o->max_rematch >= MF_R(0.0) && o->max_rematch <= MF_R(1.0)) || !mf__ms_ndf_ok(d))
         return MF_ERROR_INVALID_ARGUMENT;
     thr = (double)o->threshold;
@@ -8517,7 +8666,7 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)size * (size_t)size;
     for (i = 0; i < 2 * n2; ++i)
-        if (!(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(gradients_xy[i]) || !(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     mf__ms_zero(&m);
     m.n = size; m.n2 = n2;
     m.tx = (double *)MF_MALLOC(sizeof(double) * n2);
@@ -8805,7 +8954,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)n * (size_t)n;
     for (i = 0; i < n2; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     h = (double *)MF_MALLOC(sizeof(double) * n2);
     top = (double *)MF_MALLOC(sizeof(double) * n2);
     acc = (double *)MF_MALLOC(sizeof(double) * 2 * (size_t)g->cells);

@@ -85,7 +85,18 @@
  *     [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] = [1.55, 1000]
  *     (the mean slope, hence Lambda, exists only for gamma > 1.5).
  *   - Lambda(w) is symmetric in w.z (it uses |w.z|); at w.z = 0 it is large
- *     but finite (w.z^2 is clamped to 1e-30 inside the slope).
+ *     but finite (w.z^2 is clamped to 1e-30 inside the slope, alpha^2 tan^2
+ *     to 1e30). D, D_visible, the projected area, mf_brdf and mf_brdf_pdf are
+ *     capped at MF_BIG (1e30 in float): grazing retro-reflection and
+ *     transforms with tiny entries reach it. Random numbers outside [0, 1]
+ *     are clamped to it (NaN: 0). mf_brdf_sample returns a direction only
+ *     where mf_brdf_pdf is positive.
+ *   - Transforms: mf_transform_valid also requires |det M| > 1/MF_BIG, so
+ *     that M^-1 is finite in mf_real.
+ *   - LEADR moments: variances are clamped to [1e-8, 5e7] (alpha up to
+ *     MF_ALPHA_MAX); map builders reject normals with z < 1e-4.
+ *   - Microsurface generation: at most MF_MICROSURFACE_MAX_ITERATIONS =
+ *     100000 iterations (more is an invalid argument).
  *   - Tabulated distributions: control angles span [0, pi/2] (the ends are
  *     snapped within 1e-4 rad), at most MF_TABULATED_MAX_POINTS = 4096; D is
  *     linear in theta between them; Lambda interpolates a projected-area table
@@ -109,6 +120,19 @@
  *                           leave out a module (see section 1)
  *   MF_SQRT, MF_EXP, ...    every math call goes through a macro of this form;
  *                           define one to replace it (e.g. with an intrinsic)
+ *
+ * FAST MATH (-ffast-math, __FAST_MATH__)
+ *
+ *   The compiler may then assume that no value is NaN or Inf and fold the
+ *   comparisons this header uses to catch them. What still holds: builders
+ *   and loaders never let NaN or Inf data index memory (the IBM builder and
+ *   footprint queries test the bits of their floats, bin and texel indices
+ *   are clamped after conversion; tests/fastmath_check.c, run by make test,
+ *   checks this in float and double). What does not: the promise "0, never
+ *   NaN or Inf" for NaN or Inf arguments of the math functions (they may
+ *   propagate NaN), and results at the edges of the documented domains may
+ *   differ by more than the tested tolerances (the full test suite built
+ *   with -ffast-math is not expected to pass).
  *
  * ERROR MODEL
  *

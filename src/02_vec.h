@@ -22,9 +22,31 @@ MF_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 {
     return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x < lo ? lo : (x > hi ? hi : x); }
+/* x clamped to [lo, hi]; NaN gives lo */
+MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
 MF_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
 MF_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+/* 1 if x is finite, read from its bits: -ffast-math (__FAST_MATH__) lets the
+ * compiler assume that no value is NaN or Inf and fold x == x, x - x == 0 or
+ * isnan(x) to true; the validation of data that may index memory uses this. */
+MF_INLINE int mf__finite_bits(mf_real x)
+{
+#ifdef MF_USE_DOUBLE
+    union { double d; unsigned char c[8]; } v;
+    union { unsigned int i; unsigned char c[4]; } e;
+    unsigned int hi;
+    v.d = x;
+    e.i = 1u;
+    hi = e.c[0] == 1u ? ((unsigned int)v.c[7] << 8 | v.c[6]) : ((unsigned int)v.c[0] << 8 | v.c[1]);
+    return (hi & 0x7ff0u) != 0x7ff0u;
+#else
+    union { float f; unsigned int u; } v;
+    v.f = x;
+    return (v.u & 0x7f800000u) != 0x7f800000u;
+#endif
+}
+/* x capped at MF_BIG; NaN becomes 0 (the results that may overflow float) */
+MF_INLINE mf_real mf__cap(mf_real x) { return x < MF_BIG ? x : (x == x ? MF_BIG : MF_R(0.0)); }
 
 /* Unit vector along v; the zero vector when v is zero (or not finite). */
 MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)

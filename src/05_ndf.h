@@ -111,11 +111,15 @@ MF_INLINE mf_real mf__q(mf_real ax, mf_real ay, mf_vec3 m)
     return x * x + y * y;
 }
 
-/* alpha_w^2 tan^2(theta) = 1/a^2, with w.z clamped so the horizon stays finite */
+/* alpha_w^2 tan^2(theta) = 1/a^2, with w.z clamped so the horizon stays
+ * finite, capped at MF_A2T2_MAX (alpha 1e4 under a stretch at the horizon
+ * overflows float; NaN gives the cap too), so the Lambdas never see inf/inf */
+#define MF_A2T2_MAX MF_R(1e30)
 MF_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real x = ax * w.x, y = ay * w.y;
-    return (x * x + y * y) / mf_max(w.z * w.z, MF_R(1e-30));
+    mf_real r = (x * x + y * y) / mf_max(w.z * w.z, MF_R(1e-30));
+    return r < MF_A2T2_MAX ? r : MF_A2T2_MAX;
 }
 
 /* wm from an unstretched slope direction (cos phi, sin phi) and squared unit

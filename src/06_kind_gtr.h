@@ -56,6 +56,9 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     mf_real a, L, k;
     a = mf__clamp_alpha(alpha);
     if (a > MF_R(1.0)) a = MF_R(1.0);
+    /* the bits: under -ffast-math the comparisons let NaN through, and the
+     * spline below indexes by gamma */
+    if (!mf__finite_bits(gamma)) gamma = MF_R(0.0);
     gamma = gamma > MF_R(0.0) ? (gamma < MF_R(4.0) ? gamma : MF_R(4.0)) : MF_R(0.0);
     d = mf__ndf_init(MF_NDF_GTR, a, a);
     p = &d.p.gtr;

@@ -511,11 +511,11 @@ MFDEF mf_result mf_tabulated_build(mf_tabulated *t, const mf_real *theta, const 
     if (!theta || !D_x || n < 2 || n > MF_TABULATED_MAX_POINTS) return MF_ERROR_INVALID_ARGUMENT;
     h = hpi / (mf_real)(n - 1);
     for (i = 0; i < n; ++i) {
-        if (!(MF_FABS(theta[i]) < MF_R(10.0))) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(theta[i]) || !(MF_FABS(theta[i]) < MF_R(10.0))) return MF_ERROR_INVALID_DATA;
         if (i > 0 && !mf__tab_gap_ok(i == 1 ? MF_R(0.0) : theta[i - 1], i == n - 1 ? hpi : theta[i]))
             return MF_ERROR_INVALID_DATA;   /* unordered, or too close once the ends are snapped */
-        if (!(D_x[i] >= MF_R(0.0) && D_x[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
-        if (D_y && !(D_y[i] >= MF_R(0.0) && D_y[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(D_x[i]) || !(D_x[i] >= MF_R(0.0) && D_x[i] < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (D_y && (!mf__finite_bits(D_y[i]) || !(D_y[i] >= MF_R(0.0) && D_y[i] < MF_BIG))) return MF_ERROR_INVALID_DATA;
         if (D_y && D_y[i] != D_x[i]) aniso = 1;
         if (!(MF_FABS(theta[i] - h * (mf_real)i) <= MF_R(1e-4) * h)) uniform = 0;
     }

@@ -18,12 +18,14 @@
  * M (or with a non-finite entry) is not invertible enough to define a surface. */
 #define MF_TRANSFORM_MIN_DET MF_R(1e-9)
 
-/* 1 if M can transform a microsurface (finite, |det| above the threshold). */
+/* 1 if M can transform a microsurface (finite, |det| above the threshold,
+ * and |det| > 1/MF_BIG so that 1/det and with it M^-1 stay finite in mf_real:
+ * diag(1e-20, 1e-20) passes the relative test but not this one in float). */
 MF_INLINE int mf_transform_valid(mf_mat2 M)
 {
     mf_real n2 = M.m00 * M.m00 + M.m01 * M.m01 + M.m10 * M.m10 + M.m11 * M.m11;
     mf_real det = MF_FABS(mf_mat2_det(M));
-    return n2 < MF_BIG && det < MF_BIG && det > MF_TRANSFORM_MIN_DET * n2;
+    return n2 < MF_BIG && det < MF_BIG && det > MF_TRANSFORM_MIN_DET * n2 && det * MF_BIG > MF_R(1.0);
 }
 
 /* The distribution of the microsurface transformed by M (row-major, acting
@@ -100,9 +102,12 @@ MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 /* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
 MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
 {
+    mf_real r;
     if (!d->transformed) return mf__D_base(d, wm);
-    /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m) */
-    return d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
+    /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m),
+     * capped at MF_BIG (a small M makes |M^T m|^-4 overflow) */
+    r = d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
+    return mf__cap(r);
 }
 
 /* Deformation tracking (thesis Sec. 4.4.1). The tension matrix T = D R^-1 maps

@@ -75,9 +75,9 @@ MF_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
 MF_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
 {
     mf_real cz;
-    if (d->type == MF_NDF_LEADR) return mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w));
+    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w)));
     cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
-    return cz + cz * mf_lambda(d, w);
+    return mf__cap(cz + cz * mf_lambda(d, w));
 }
 
 /* Distribution of visible normals (Heitz & d'Eon 2014 Eq. 2):
@@ -86,5 +86,5 @@ MF_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
 {
     mf_real c = mf_dot(w, wm);
     if (w.z < MF_R(0.0) || !(c > MF_R(0.0))) return MF_R(0.0);
-    return c * mf_D(d, wm) / mf_projected_area(d, w);
+    return mf__cap(c * mf_D(d, wm) / mf_projected_area(d, w));
 }

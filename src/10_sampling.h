@@ -16,11 +16,16 @@
  *             sample, no rejection, deterministic; about 50-100x the cost of
  *             GGX (see make bench). */
 
+/* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
+MF_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
+
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
 MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_vec3 m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
+    mf_vec3 m;
+    u1 = mf__u01(u1); u2 = mf__u01(u2);
+    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
               : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
     if (!d->transformed) return m;
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
@@ -32,6 +37,7 @@ MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
+    u1 = mf__u01(u1); u2 = mf__u01(u2);
     if (!d->transformed) {
         if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
         return mf__ndf_sample_visible(d, w, u1, u2);

@@ -255,12 +255,15 @@ MF_INLINE mf_real mf_leadr_diffuse_sh9(mf_leadr a, mf_vec3 wo, const mf_real sh[
     return den > MF_R(0.0) ? num / (MF_PI * den) : MF_R(0.0);
 }
 
-/* Covariance (Eq. 9) with its validity guard: variances at least
- * MF_LEADR_MIN_VARIANCE and |correlation| at most MF_LEADR_MAX_CORRELATION
- * (filtering and float round-off can break both). Returns 1 if the moments
- * were valid as given, 0 if the guard changed them (non-finite moments give an
- * isotropic variance of MF_LEADR_MIN_VARIANCE). */
+/* Covariance (Eq. 9) with its validity guard: variances in
+ * [MF_LEADR_MIN_VARIANCE, MF_LEADR_MAX_VARIANCE] and |correlation| at most
+ * MF_LEADR_MAX_CORRELATION (filtering and float round-off can break the
+ * first and last; the upper bound, alpha = sqrt(2 var) = MF_ALPHA_MAX, keeps
+ * the determinant and D finite in float). Returns 1 if the moments were valid
+ * as given, 0 if the guard changed them (non-finite moments give an isotropic
+ * variance of MF_LEADR_MIN_VARIANCE). */
 #define MF_LEADR_MIN_VARIANCE MF_R(1e-8)
+#define MF_LEADR_MAX_VARIANCE MF_R(5e7)
 #define MF_LEADR_MAX_CORRELATION MF_R(0.999)
 MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
 {
@@ -269,6 +272,8 @@ MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf
     if (!(sx < MF_BIG) || !(sy < MF_BIG) || !(MF_FABS(c) < MF_BIG)) { sx = sy = MF_LEADR_MIN_VARIANCE; c = MF_R(0.0); ok = 0; }
     if (!(sx >= MF_LEADR_MIN_VARIANCE)) { sx = MF_LEADR_MIN_VARIANCE; ok = 0; }
     if (!(sy >= MF_LEADR_MIN_VARIANCE)) { sy = MF_LEADR_MIN_VARIANCE; ok = 0; }
+    if (sx > MF_LEADR_MAX_VARIANCE) { sx = MF_LEADR_MAX_VARIANCE; ok = 0; }
+    if (sy > MF_LEADR_MAX_VARIANCE) { sy = MF_LEADR_MAX_VARIANCE; ok = 0; }
     lim = MF_LEADR_MAX_CORRELATION * MF_SQRT(sx * sy);
     if (MF_FABS(c) > lim) { c = c > MF_R(0.0) ? lim : -lim; ok = 0; }
     if (var_x) *var_x = sx;
@@ -315,7 +320,11 @@ MF_INLINE mf_leadr mf_leadr_map_lookup(const mf_leadr_map *m, mf_real u, mf_real
     mf_real lod, f;
     int l0;
     if (!m || !m->texels || m->levels < 1 || !(u == u) || !(v == v)) return mf__leadr_make(0, 0, 0, 0, 0);
-    u -= (mf_real)(int)u; v -= (mf_real)(int)v;   /* keep the coordinates small; wrap happens per texel */
+    /* keep the coordinates small (wrap happens per texel); beyond 2^23 every
+     * float is an integer, and an infinite coordinate goes to the edge 0:
+     * no out-of-range conversion to int */
+    u = MF_FABS(u) < MF_R(8388608.0) ? u - (mf_real)(int)u : MF_R(0.0);
+    v = MF_FABS(v) < MF_R(8388608.0) ? v - (mf_real)(int)v : MF_R(0.0);
     lod = footprint > MF_R(0.0) ? MF_LOG(footprint * (mf_real)(m->width > m->height ? m->width : m->height)) * MF_R(1.4426950408889634) : MF_R(0.0);
     lod = mf_clamp(lod, MF_R(0.0), (mf_real)(m->levels - 1));
     l0 = (int)lod;
@@ -329,10 +338,14 @@ MF_INLINE mf_leadr mf_leadr_map_lookup(const mf_leadr_map *m, mf_real u, mf_real
  * the slope along u is (h[x+1] - h[x-1]) width / 2, periodic) or from a normal
  * map (unit normals, 3 per texel, z > 0), plus a base microsurface roughness
  * (alpha_x, alpha_y added as alpha^2/2 to the variances). Row-major, rows top
- * to bottom. width and height must be powers of two. Errors: NULL or zero size
- * or non-power-of-two (MF_ERROR_INVALID_ARGUMENT), NaN heights or invalid
- * normals (MF_ERROR_INVALID_DATA), allocation (MF_ERROR_OUT_OF_MEMORY);
- * nothing stays allocated on failure. */
+ * to bottom. width and height must be powers of two, at most 2^15. Errors:
+ * NULL or zero size or non-power-of-two, alpha NaN, negative or above
+ * MF_ALPHA_MAX (MF_ERROR_INVALID_ARGUMENT); non-finite heights or slopes
+ * whose square exceeds MF_BIG / 4, invalid normals - not unit within 1e-3,
+ * or z below MF_LEADR_MIN_NORMAL_Z, whose slope variance would overflow -
+ * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY); nothing
+ * stays allocated on failure. */
+#define MF_LEADR_MIN_NORMAL_Z MF_R(1e-4)
 MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *heights, int width, int height,
                                           mf_real alpha_x, mf_real alpha_y);
 MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normals_xyz, int width, int height,
@@ -356,6 +369,8 @@ static mf_result mf__leadr_alloc(mf_leadr_map *m, int w, int h)
         if (ww == 1 && hh == 1) break;
         ww = ww > 1 ? ww / 2 : 1; hh = hh > 1 ? hh / 2 : 1;
     }
+    /* at most 2^30 * 4/3 texels (sizes up to 2^15): check the bytes anyway */
+    if (total > (size_t)-1 / sizeof(mf_leadr)) return MF_ERROR_OUT_OF_MEMORY;
     m->texels = (mf_leadr *)MF_MALLOC(sizeof(mf_leadr) * total);
     return m->texels ? MF_SUCCESS : MF_ERROR_OUT_OF_MEMORY;
 }
@@ -366,11 +381,11 @@ static void mf__leadr_reduce(mf_leadr_map *m)
 {
     int l;
     for (l = 1; l < m->levels; ++l) {
-        int pw = mf__leadr_level_w(m, l - 1), ph = mf__leadr_level_h(m, l - 1);
-        int w = mf__leadr_level_w(m, l), h = mf__leadr_level_h(m, l), x, y;
+        size_t pw = (size_t)mf__leadr_level_w(m, l - 1), ph = (size_t)mf__leadr_level_h(m, l - 1);
+        size_t w = (size_t)mf__leadr_level_w(m, l), h = (size_t)mf__leadr_level_h(m, l), x, y;
         const mf_leadr *src = m->texels + m->offset[l - 1];
         mf_leadr *dst = m->texels + m->offset[l];
-        int sx = pw > w ? 2 : 1, sy = ph > h ? 2 : 1;
+        size_t sx = pw > w ? 2 : 1, sy = ph > h ? 2 : 1;
         for (y = 0; y < h; ++y)
             for (x = 0; x < w; ++x) {
                 mf_leadr acc = src[(y * sy) * pw + x * sx];
@@ -384,26 +399,35 @@ static void mf__leadr_reduce(mf_leadr_map *m)
     }
 }
 
+/* the base roughness: finite, 0 to MF_ALPHA_MAX */
+MF_INLINE int mf__leadr_alpha_ok(mf_real a) { return a >= MF_R(0.0) && a <= MF_ALPHA_MAX; }
+
 MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *heights, int width, int height,
                                           mf_real alpha_x, mf_real alpha_y)
 {
-    int x, y;
+    size_t x, y, w = (size_t)width, h = (size_t)height, i;
     mf_result r;
     if (!m) return MF_ERROR_INVALID_ARGUMENT;
     m->texels = 0; m->width = m->height = m->levels = 0;
-    if (!heights || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15))
+    if (!heights || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
+        !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
-    for (x = 0; x < width * height; ++x)
-        if (!(MF_FABS(heights[x]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+    /* allocation first: a size the allocator refuses never reads the data */
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
-    for (y = 0; y < height; ++y)
-        for (x = 0; x < width; ++x) {
-            int xp = (x + 1) % width, xm = (x + width - 1) % width, yp = (y + 1) % height, ym = (y + height - 1) % height;
+    for (i = 0; i < w * h; ++i)
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) { mf_leadr_map_release(m); return MF_ERROR_INVALID_DATA; }
+    for (y = 0; y < h; ++y)
+        for (x = 0; x < w; ++x) {
+            size_t xp = (x + 1) % w, xm = (x + w - 1) % w, yp = (y + 1) % h, ym = (y + h - 1) % h;
             /* rows run top to bottom, v grows downward with the row index */
-            mf_real su = (heights[y * width + xp] - heights[y * width + xm]) * (mf_real)width * MF_R(0.5);
-            mf_real sv = (heights[yp * width + x] - heights[ym * width + x]) * (mf_real)height * MF_R(0.5);
-            m->texels[y * width + x] = mf_leadr_with_roughness(mf_leadr_from_slope(su, sv), alpha_x, alpha_y);
+            mf_real su = (heights[y * w + xp] - heights[y * w + xm]) * (mf_real)width * MF_R(0.5);
+            mf_real sv = (heights[yp * w + x] - heights[ym * w + x]) * (mf_real)height * MF_R(0.5);
+            if (!(su * su < MF_R(0.25) * MF_BIG) || !(sv * sv < MF_R(0.25) * MF_BIG)) {
+                mf_leadr_map_release(m);
+                return MF_ERROR_INVALID_DATA;
+            }
+            m->texels[y * w + x] = mf_leadr_with_roughness(mf_leadr_from_slope(su, sv), alpha_x, alpha_y);
         }
     mf__leadr_reduce(m);
     return MF_SUCCESS;
@@ -412,20 +436,24 @@ MFDEF mf_result mf_leadr_map_from_heights(mf_leadr_map *m, const mf_real *height
 MFDEF mf_result mf_leadr_map_from_normals(mf_leadr_map *m, const mf_real *normals_xyz, int width, int height,
                                           mf_real alpha_x, mf_real alpha_y)
 {
-    int i;
+    size_t i, n_texels = (size_t)width * (size_t)height;
     mf_result r;
     if (!m) return MF_ERROR_INVALID_ARGUMENT;
     m->texels = 0; m->width = m->height = m->levels = 0;
-    if (!normals_xyz || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15))
+    if (!normals_xyz || !mf__pow2(width) || !mf__pow2(height) || width > (1 << 15) || height > (1 << 15) ||
+        !mf__leadr_alpha_ok(alpha_x) || !mf__leadr_alpha_ok(alpha_y))
         return MF_ERROR_INVALID_ARGUMENT;
-    for (i = 0; i < width * height; ++i) {
-        const mf_real *n = normals_xyz + 3 * i;
-        mf_real l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-        if (!(n[2] > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) return MF_ERROR_INVALID_DATA;
-    }
     r = mf__leadr_alloc(m, width, height);
     if (r != MF_SUCCESS) { m->width = m->height = m->levels = 0; return r; }
-    for (i = 0; i < width * height; ++i) {
+    for (i = 0; i < n_texels; ++i) {
+        const mf_real *n = normals_xyz + 3 * i;
+        mf_real l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+        if (!(n[2] >= MF_LEADR_MIN_NORMAL_Z) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+            mf_leadr_map_release(m);
+            return MF_ERROR_INVALID_DATA;
+        }
+    }
+    for (i = 0; i < n_texels; ++i) {
         const mf_real *n = normals_xyz + 3 * i;
         m->texels[i] = mf_leadr_with_roughness(mf_leadr_from_normal(mf_vec3_make(n[0], n[1], n[2])), alpha_x, alpha_y);
     }

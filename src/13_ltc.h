@@ -24,16 +24,34 @@ MF_INLINE mf_vec3 mf__mat3_apply(const mf_real *a, mf_vec3 v)
                         a[6] * v.x + a[7] * v.y + a[8] * v.z);
 }
 
-/* Inverse of a row-major 3x3 matrix; returns its determinant (0: singular). */
+/* A 3x3 matrix is singular for the LTC code when |det| is at most
+ * MF_LTC_MIN_DET_REL times the product of its row lengths (Hadamard's bound:
+ * the ratio is 1 for orthogonal rows, scale-free, and a rounding-level
+ * remainder for parallel rows: float gives 4e-7 for two equal rows of
+ * 4.9609375, which an absolute test accepted). */
+#ifdef MF_USE_DOUBLE
+#define MF_LTC_MIN_DET_REL 1e-12
+#else
+#define MF_LTC_MIN_DET_REL 1e-5f
+#endif
+
+/* Inverse of a row-major 3x3 matrix; returns its determinant (0: singular,
+ * not finite, or an inverse that is not finite). */
 MF_INLINE mf_real mf__mat3_inverse(const mf_real *a, mf_real *inv)
 {
     mf_real c0 = a[4] * a[8] - a[5] * a[7], c1 = a[5] * a[6] - a[3] * a[8], c2 = a[3] * a[7] - a[4] * a[6];
-    mf_real det = a[0] * c0 + a[1] * c1 + a[2] * c2, r;
+    mf_real det = a[0] * c0 + a[1] * c1 + a[2] * c2, r, rel, s = MF_R(0.0);
+    int i;
     if (!(det != MF_R(0.0)) || !(MF_FABS(det) < MF_BIG)) return MF_R(0.0);
+    rel = MF_FABS(det) / MF_SQRT(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) / MF_SQRT(a[3] * a[3] + a[4] * a[4] + a[5] * a[5]) /
+          MF_SQRT(a[6] * a[6] + a[7] * a[7] + a[8] * a[8]);
+    if (!(rel > MF_LTC_MIN_DET_REL)) return MF_R(0.0);
     r = MF_R(1.0) / det;
     inv[0] = c0 * r; inv[1] = (a[2] * a[7] - a[1] * a[8]) * r; inv[2] = (a[1] * a[5] - a[2] * a[4]) * r;
     inv[3] = c1 * r; inv[4] = (a[0] * a[8] - a[2] * a[6]) * r; inv[5] = (a[2] * a[3] - a[0] * a[5]) * r;
     inv[6] = c2 * r; inv[7] = (a[1] * a[6] - a[0] * a[7]) * r; inv[8] = (a[0] * a[4] - a[1] * a[3]) * r;
+    for (i = 0; i < 9; ++i) s += MF_FABS(inv[i]);
+    if (!(s < MF_BIG)) return MF_R(0.0);
     return det;
 }
 
@@ -46,7 +64,7 @@ MF_INLINE mf_ltc mf_ltc_from_matrix9(const mf_real m[9])
     int i;
     for (i = 0; i < 9; ++i) l.M[i] = m[i];
     det = mf__mat3_inverse(l.M, l.Minv);
-    if (!(MF_FABS(det) > MF_R(1e-20))) {
+    if (!(MF_FABS(det) * MF_BIG > MF_R(1.0))) {   /* singular, or 1/det overflows */
         for (i = 0; i < 9; ++i) l.M[i] = l.Minv[i] = (i % 4 == 0) ? MF_R(1.0) : MF_R(0.0);
         det = MF_R(1.0);
     }
@@ -77,7 +95,7 @@ MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d,
     inv[2][0] = d; inv[2][1] = 0; inv[2][2] = e;
     for (i = 0; i < 9; ++i) m[i] = inv[i / 3][i % 3];
     det = mf__mat3_inverse(m, l.M);
-    if (!(MF_FABS(det) > MF_R(1e-20))) {
+    if (!(MF_FABS(det) > MF_R(0.0))) {
         const mf_real I[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
         return mf_ltc_from_matrix9(I);
     }
@@ -92,7 +110,7 @@ MF_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
     mf_vec3 v = mf__mat3_apply(l->Minv, w);
     mf_real l2 = mf_dot(v, v);
     if (!(v.z > MF_R(0.0)) || !(l2 > MF_R(0.0))) return MF_R(0.0);
-    return l->det_inv * v.z / (MF_PI * l2 * l2);
+    return mf__cap(l->det_inv * v.z / (MF_PI * l2 * l2));
 }
 
 /* A direction with density mf_ltc_eval: a cosine-distributed direction moved by M. */
@@ -536,9 +554,18 @@ MFDEF void mf_ltc_table_release(mf_ltc_table *t)
 static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_theta_o, mf_real alpha,
                              mf_real *albedo, mf_real *fresnel)
 {
-    mf_real ct = mf_clamp(cos_theta_o, MF_R(0.0), MF_R(1.0)), a = mf_clamp(alpha, MF_R(0.0), MF_R(1.0));
-    mf_real x = MF_SQRT(MF_R(1.0) - ct) * (mf_real)(nt - 1), y = MF_SQRT(a) * (mf_real)(na - 1), fx, fy, v[6];
-    int ix = (int)x, iy = (int)y, k;
+    mf_real ct, a, x, y, fx, fy, v[6];
+    int ix, iy, k;
+    if (!(cos_theta_o == cos_theta_o) || !(alpha == alpha)) {
+        /* NaN: no lookup (its conversion to int is undefined) */
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        if (albedo) *albedo = MF_R(0.0);
+        if (fresnel) *fresnel = MF_R(0.0);
+        return mf_ltc_from_matrix9(I9);
+    }
+    ct = mf_clamp(cos_theta_o, MF_R(0.0), MF_R(1.0)); a = mf_clamp(alpha, MF_R(0.0), MF_R(1.0));
+    x = MF_SQRT(MF_R(1.0) - ct) * (mf_real)(nt - 1); y = MF_SQRT(a) * (mf_real)(na - 1);
+    ix = (int)x; iy = (int)y;
     if (ix > nt - 2) ix = nt - 2;
     if (iy > na - 2) iy = na - 2;
     if (ix < 0) ix = 0;

@@ -123,8 +123,11 @@ MF_INLINE unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
 MF_INLINE int mf__ibm_cell(mf_real v, int b)
 {
     mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
+    int c;
     if (!(f > MF_R(0.0))) return 0;              /* also NaN */
-    return f >= (mf_real)b ? b - 1 : (int)f;     /* truncation = floor for f > 0 */
+    if (f >= (mf_real)b) return b - 1;
+    c = (int)f;                                  /* truncation = floor for f > 0 */
+    return c >= 0 && c < b ? c : 0;              /* in range even where -ffast-math let NaN through */
 }
 
 /* b*b: the number of bins (those outside the unit disk stay empty). */
@@ -218,6 +221,7 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
                                 mf_real u3, mf_real u4);
 
 /* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
+#define MF_IBM_MIN_CUT MF_R(0.1)
 /* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
  * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
  * normalized before binning), row-major, texel (x, y) at index y*width + x.
@@ -226,7 +230,8 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
  * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
  * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
- * and the cut in sigmas (0: 3); the neighbourhood radius r grows with b so
+ * and the cut in sigmas (0: 3, else in [MF_IBM_MIN_CUT, 10]: a cut that
+ * rounds to 0 in float would not reload); the neighbourhood radius r grows with b so
  * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
  * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
  * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
@@ -477,19 +482,23 @@ MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, int row, const mf_real *x
 MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
 {
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
-    int row, pieces = 0;
+    int row, pieces = 0, edges_ok;
     p->mode = MF__IBM_NONE;
     p->direct = 0;
     p->full = MF_R(0.0);
     if (!f) return;
+    /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
+    if (!mf__finite_bits(f->u) || !mf__finite_bits(f->v)) return;
+    edges_ok = mf__finite_bits(f->ax) && mf__finite_bits(f->ay) && mf__finite_bits(f->bx) && mf__finite_bits(f->by);
     p->cx = f->u * W; p->cy = f->v * H;
     if (!(MF_FABS(p->cx) < MF_BIG) || !(MF_FABS(p->cy) < MF_BIG)) return;
     p->cx -= W * MF_FLOOR(p->cx / W);
     p->cy -= H * MF_FLOOR(p->cy / H);
     if (!(p->cx >= MF_R(0.0)) || !(p->cx < W)) p->cx = MF_R(0.0);   /* rounding at the period edge */
     if (!(p->cy >= MF_R(0.0)) || !(p->cy < H)) p->cy = MF_R(0.0);
-    p->tx = (int)p->cx; if (p->tx >= ibm->width) p->tx = ibm->width - 1;
-    p->ty = (int)p->cy; if (p->ty >= ibm->height) p->ty = ibm->height - 1;
+    p->tx = (int)p->cx; if (p->tx >= ibm->width || p->tx < 0) p->tx = p->tx < 0 ? 0 : ibm->width - 1;
+    p->ty = (int)p->cy; if (p->ty >= ibm->height || p->ty < 0) p->ty = p->ty < 0 ? 0 : ibm->height - 1;
+    if (!edges_ok) { p->mode = MF__IBM_POINT; return; }
     p->ax = f->ax * W; p->ay = f->ay * H; p->bx = f->bx * W; p->by = f->by * H;
     cross = p->ax * p->by - p->ay * p->bx;
     p->area = MF_FABS(cross);
@@ -682,18 +691,22 @@ MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, mf__ibm_set *s, unsigned int v
     return k;
 }
 
-/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin). */
-MF_INLINE void mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
+/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin); returns the
+ * piece's area as the texel areas add up (every bin, listed or not). */
+MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
 {
+    mf_real tot = MF_R(0.0);
     int x, y;
     for (y = pc->by0; y < pc->by1; ++y)
         for (x = pc->bx0; x < pc->bx1; ++x) {
             mf_real a = mf__ibm_texel_area(pc, x, y);
             int k;
             if (!(a > MF_R(0.0))) continue;
+            tot += a;
             k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)y * (size_t)ibm->width + (size_t)x, ibm->bin_bits));
             if (k >= 0) s->w[k] += a;
         }
+    return tot;
 }
 
 /* first index in [s, e) whose Morton code has bit `bit` set */
@@ -793,7 +806,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * bin once, the pieces by direct sum or kd traversal, all divided by |A|. */
 MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
-    mf_real tot;
+    mf_real tot, dtot = MF_R(0.0);
     int i;
     if (p->mode == MF__IBM_NONE) { for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0); return; }
     if (p->mode == MF__IBM_POINT) {
@@ -820,7 +833,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
                 if (col >= f0 && col <= f1) continue;
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
                 tot += mf__ibm_shoelace(pc.x, pc.y, pc.n);
-                if (p->direct) mf__ibm_direct(ibm, &pc, s);
+                if (p->direct) dtot += mf__ibm_direct(ibm, &pc, s);
                 else
                     for (i = 0; i < s->n; i += MF_IBM_BATCH)
                         mf__ibm_traverse(ibm, &pc, s->bin + i, s->n - i < MF_IBM_BATCH ? s->n - i : MF_IBM_BATCH, s->w + i);
@@ -828,7 +841,11 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         }
     }
     /* |A| as the pieces add up, so that the weights of all bins sum to 1 even
-     * where float round-off moves the corners of a thin footprint */
+     * where float round-off moves the corners of a thin footprint; in the
+     * direct sum, as the texel areas themselves add up (the clipped texels
+     * and the shoelace of the pieces round differently: on a flat map, where
+     * one bin holds every texel, the weight is then exactly 1) */
+    if (p->direct && dtot > MF_R(0.0)) tot = dtot;
     if (!(tot > MF_R(0.0))) tot = p->area;
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
@@ -1118,7 +1135,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     mf__ibm_zero(ibm);
     mf__ibm_zero(&L);
     if (!normals_xyz || width < 1 || width > 16384 || height < 1 || height > 16384 || !(flake_alpha > MF_R(0.0)) ||
-        resolution < 0 || resolution > MF_IBM_MAX_RES || !(cut_sigmas >= MF_R(0.0)) || !(cut_sigmas <= MF_R(10.0)))
+        resolution < 0 || resolution > MF_IBM_MAX_RES || !(cut_sigmas >= MF_R(0.0)) || !(cut_sigmas <= MF_R(10.0)) ||
+        (cut_sigmas > MF_R(0.0) && cut_sigmas < MF_IBM_MIN_CUT))
         return MF_ERROR_INVALID_ARGUMENT;
     alpha = mf__ibm_bitsf(mf__ibm_fbits(mf__clamp_alpha(flake_alpha)));
     cut = mf__ibm_bitsf(mf__ibm_fbits(cut_sigmas > MF_R(0.0) ? cut_sigmas : MF_R(3.0)));
@@ -1164,7 +1182,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     mf_real nz, l2, il;
                     if (tx >= width || ty >= height) continue;
                     nx = nv[0]; ny = nv[1]; nz = nv[2]; l2 = nx * nx + ny * ny + nz * nz;
-                    if (!(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
+                    if (!mf__finite_bits(nx) || !mf__finite_bits(ny) || !mf__finite_bits(nz) ||
+                        !(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
                         MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
                         return MF_ERROR_INVALID_DATA;
                     }

@@ -32,7 +32,7 @@
  * different samples). d must be centered
  * (every periodic surface has mean slope 0): a LEADR distribution with a
  * non-zero mean slope is rejected. Errors: NULL pointers, bad size, negative
- * iterations, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
+ * iterations or more than MF_MICROSURFACE_MAX_ITERATIONS, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
  * (MF_ERROR_OUT_OF_MEMORY); nothing stays allocated on failure. */
 /* 64-bit seeds: unsigned long long (C99, C++11; C++98 compilers accept it
  * as an extension, quietly here) */
@@ -47,6 +47,9 @@ typedef unsigned long long mf_u64;
 #define MF_MICROSURFACE_MIN_SIZE 8
 #define MF_MICROSURFACE_MAX_SIZE 4096
 #define MF_MICROSURFACE_THRESHOLD MF_R(0.02)
+/* the most re-matching iterations a call accepts (the paper uses 500; at
+ * 4096^2 this cap is about 5 days of one core): more is an invalid argument */
+#define MF_MICROSURFACE_MAX_ITERATIONS 100000
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
 
@@ -720,7 +723,7 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
         stats->rms_target = stats->rms_central = stats->rms_triangle = MF_R(0.0);
     }
     if (!d || !o || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
-        o->iterations < 0 || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
+        o->iterations < 0 || o->iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
         !(o->max_rematch >= MF_R(0.0) && o->max_rematch <= MF_R(1.0)) || !mf__ms_ndf_ok(d))
         return MF_ERROR_INVALID_ARGUMENT;
     thr = (double)o->threshold;
@@ -830,7 +833,7 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)size * (size_t)size;
     for (i = 0; i < 2 * n2; ++i)
-        if (!(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(gradients_xy[i]) || !(MF_FABS(gradients_xy[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     mf__ms_zero(&m);
     m.n = size; m.n2 = n2;
     m.tx = (double *)MF_MALLOC(sizeof(double) * n2);
@@ -1118,7 +1121,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)n * (size_t)n;
     for (i = 0; i < n2; ++i)
-        if (!(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
+        if (!mf__finite_bits(heights[i]) || !(MF_FABS(heights[i]) < MF_BIG)) return MF_ERROR_INVALID_DATA;
     h = (double *)MF_MALLOC(sizeof(double) * n2);
     top = (double *)MF_MALLOC(sizeof(double) * n2);
     acc = (double *)MF_MALLOC(sizeof(double) * 2 * (size_t)g->cells);

@@ -188,6 +188,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_materials);
     MFT_RUN(test_dielectric);
     MFT_RUN(test_robust);
+    MFT_RUN(test_fuzzfound);
     MFT_RUN(test_float);
     MFT_RUN(test_tu2);
     printf("%d passed, %d failed\n", mft_passed, mft_failed);

@@ -7,6 +7,20 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <stddef.h>
+
+/* The library allocates through the tests' counting allocator
+ * (test_fuzzfound.c): it can fail at a chosen call and counts live blocks. */
+#ifdef __cplusplus
+extern "C" {
+#endif
+void *mft_malloc(size_t n);
+void mft_free(void *p);
+#ifdef __cplusplus
+}
+#endif
+#define MF_MALLOC(n) mft_malloc(n)
+#define MF_FREE(p) mft_free(p)
 #include "microfacet.h"
 
 #ifdef __cplusplus
@@ -74,6 +88,7 @@ void test_ibm(void);
 void test_microsurface(void);
 void test_materials(void);
 void test_dielectric(void);
+void test_fuzzfound(void);
 
 /* The same inline and cold-path computations, compiled in each unit that
  * calls them: test_tu2 compares its own with those of tests/main.c. The

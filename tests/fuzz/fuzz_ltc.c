@@ -1,0 +1,39 @@
+/* Fuzz target: LTC with arbitrary matrices and polygons (NaN, Inf, huge,
+ * repeated and self-intersecting vertices): mf_ltc_from_matrix,
+ * mf_ltc_from_inverse, eval, sample, mf_ltc_integrate, the polygon form
+ * factors and the table lookups. */
+#include "fuzz_common.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_in in = { data, size };
+    mf_real M[3][3], a, b, x;
+    mf_vec3 verts[16], w, F;
+    mf_ltc l;
+    int i, j, n = (int)(fz_u8(&in) % 17u), two = (int)(fz_u8(&in) & 1u);
+    unsigned mode = fz_u8(&in);
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 3; ++j) M[i][j] = fz_real(&in);
+    if (mode % 3u == 0) l = mf_ltc_from_matrix(M);
+    else if (mode % 3u == 1) l = mf_ltc_from_inverse(M[0][0], M[0][1], M[0][2], M[1][0], M[1][1]);
+    else l = mf_ltc_ggx(fz_real(&in), fz_real(&in));
+    for (i = 0; i < n; ++i) { verts[i].x = fz_real(&in); verts[i].y = fz_real(&in); verts[i].z = fz_real(&in); }
+    w = mf_normalize(mf_vec3_make(fz_real(&in), fz_real(&in), fz_real(&in)));
+    FZ_NONNEG(mf_ltc_eval(&l, w), "ltc_eval");
+    w = mf_ltc_sample(&l, fz_unit(&in), fz_unit(&in));
+    FZ_VEC(w, "ltc_sample");
+    x = mf_ltc_integrate(&l, verts, n, two);
+    FZ_NONNEG(x, "ltc_integrate");
+    FZ_NONNEG(mf_polygon_irradiance(verts, n, two), "polygon_irradiance");
+    F = mf_polygon_vector_form_factor(verts, n);
+    FZ_VEC(F, "vector_form_factor");
+    FZ_NONNEG(mf_sphere_form_factor(F), "sphere_form_factor");
+    a = fz_real(&in); b = fz_real(&in);
+    FZ_NONNEG(mf_ltc_ggx_albedo(a, b), "ggx_albedo");
+    FZ_NONNEG(mf_ltc_ggx_fresnel(a, b), "ggx_fresnel");
+    l = mf_ltc_ggx(a, b);
+    for (i = 0; i < 9; ++i) FZ_FIN(l.Minv[i], "ggx Minv");
+    FZ_NONNEG(mf_ltc_meso_alpha(a), "meso_alpha");
+    FZ_NONNEG(mf_ltc_combined_alpha(a, b), "combined_alpha");
+    return 0;
+}
