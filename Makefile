@@ -283,6 +283,7 @@ out/%.png: $(BUILD)/ex_%
 	@echo "  RUN     examples/$*.c"
 	@{ ./$< out/$* 2>&1; echo $$? > out/$*.rc; } | sed 's/^/[$*] /'; \
 	  rc=$$(cat out/$*.rc); rm -f out/$*.rc; [ "$$rc" -eq 0 ] || { rm -f $@; exit 1; }
+.SECONDARY: $(EXAMPLES:%=$(BUILD)/ex_%)
 demo: $(EXAMPLES:%=out/%.png)
 	@echo "make demo: $(words $(EXAMPLES)) examples; images in out/$(if $(EXR_DEFS),, (no .exr: OpenEXR not found, or EXR=no))"
 	@cd out && ls -1 $(foreach e,$(EXAMPLES),$(e).png $(e).pfm $(if $(EXR_DEFS),$(e).exr)) | sed 's|^|  out/|'

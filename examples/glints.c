@@ -207,6 +207,7 @@ int main(int argc, char **argv)
             if (s) ex_label(&im, col * PW + 4, s * PH + PH - 12, 1, "RMS dev. %.0f%% of IBM", 100.0 * sqrt(dev[s - 1][col] / np) / m);
         }
     }
+    ex_label(&im, 4, 2 * PH - 26, 1, "GTR %g g1.5 flakes, alpha %g", (double)gtr_alpha, (double)flake_alpha);
     err = ex_write(&im, base);
     ex_image_free(&im);
     printf("%d x %d panels of %d x %d; the tile spans %g, 1/%g, 1/%g and 1/%g of the panel width\n", COLS, ROWS, PW, PH,
