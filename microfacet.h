@@ -726,15 +726,6 @@ MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real
     return mf_clamp(MF_R(0.5) * (rp + rs), MF_R(0.0), MF_R(1.0));
 }
 
-/* Schlick's approximation f0 + (1 - f0)(1 - cos)^5. */
-MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
-{
-    mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0));
-    if (!(m == m)) m = MF_R(0.0);
-    f0 = mf_clamp(f0, MF_R(0.0), MF_R(1.0));
-    mf_real m2 = m * m;
-    return f0 + (MF_R(1.0) - f0) * m2 * m2 * m;
-}
 
 /* Normal-incidence reflectance of a dielectric of relative index eta,
  * ((eta - 1) / (eta + 1))^2, and the eta > 1 giving f0 (f0 in [0, 1), clamped
@@ -764,6 +755,11 @@ MF_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_th
     f90 = mf_clamp(f90, MF_R(0.0), MF_R(1.0));
     m2 = m * m;
     return f0 + (f90 - f0) * m2 * m2 * m;
+}
+/* Schlick's approximation f0 + (1 - f0)(1 - cos)^5: the f90 = 1 case. */
+MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
+{
+    return mf_fresnel_schlick_f90(f0, MF_R(1.0), cos_theta);
 }
 
 /* Artist-friendly conductor Fresnel (Gulbrandsen 2014, "Artist Friendly
@@ -1153,17 +1149,20 @@ MF_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 }
 
 /* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3), before the
- * final normalization; w need not be unit. (0,0,1) for degenerate input. */
-MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+ * final normalization; w need not be unit. (0,0,1) for degenerate input. k
+ * scales the cap's lower bound -k v.z: 1 is the whole visible hemisphere, k < 1
+ * the bounded cap of Eto & Tokuyoshi 2023 (mf_ggx_sample_visible_bounded). */
+MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
 {
     mf_vec3 v, h;
-    mf_real phi, z, s, l2;
+    mf_real phi, z, s, l2, b;
     v = mf_vec3_make(ax * w.x, ay * w.y, w.z);
     l2 = mf_dot(v, v);
     if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
     phi = MF_R(2.0) * MF_PI * u1;
-    z = (MF_R(1.0) - u2) * (MF_R(1.0) + v.z) - v.z;          /* cap of the visible hemisphere */
+    b = k * v.z;
+    z = (MF_R(1.0) - u2) * (MF_R(1.0) + b) - b;              /* cap of the visible hemisphere */
     s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
     h = mf_vec3_make(s * MF_COS(phi) + v.x, s * MF_SIN(phi) + v.y, z + v.z);
     h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
@@ -1174,7 +1173,7 @@ MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_re
 {
     mf_vec3 h;
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    h = mf__ggx_vndf_unnormalized(ax, ay, w, u1, u2);
+    h = mf__ggx_vndf_unnormalized(ax, ay, w, u1, u2, MF_R(1.0));
     return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
@@ -1722,7 +1721,7 @@ MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_r
     }
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     w = mf_mat2_apply(d->Minv, w);   /* the samplers normalize their view themselves */
-    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2);
+    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
     else m = mf__ndf_sample_visible(d, w, u1, u2);
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
@@ -1815,23 +1814,12 @@ MF_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
 }
 MF_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
-    mf_vec3 v, h;
-    mf_real ax, ay, l2, phi, b, z, s;
+    mf_vec3 h;
     if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
     if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    ax = d->ax; ay = d->ay;
-    v = mf_vec3_make(ax * wo.x, ay * wo.y, wo.z);              /* the hemisphere configuration */
-    l2 = mf_dot(v, v);
-    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
-    phi = MF_R(2.0) * MF_PI * mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    b = mf__ggx_bounded_k(ax, ay, wo) * v.z;                    /* the cap's lower bound -b */
-    z = (MF_R(1.0) - mf_clamp(u2, MF_R(0.0), MF_R(1.0))) * (MF_R(1.0) + b) - b;
-    s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
-    h = mf_vec3_make(ax * (s * MF_COS(phi) + v.x), ay * (s * MF_SIN(phi) + v.y), mf_max(z + v.z, MF_R(0.0)));
-    l2 = mf_dot(h, h);
-    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    return mf_scale(h, MF_R(1.0) / MF_SQRT(l2));
+    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf_clamp(u1, MF_R(0.0), MF_R(1.0)), mf_clamp(u2, MF_R(0.0), MF_R(1.0)),
+                                  mf__ggx_bounded_k(d->ax, d->ay, wo));
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 /* Density per unit solid angle of wi = reflect(wo, wm) for wm from
  * mf_ggx_sample_visible_bounded (paper Listing 2): D(wm) / (2 (k wo.z + t)),
@@ -1922,14 +1910,17 @@ MF_INLINE int mf__dielectric_half(mf_vec3 wo, mf_vec3 wi, mf_real e, mf_vec3 *h)
     return wi.z > MF_R(0.0) ? mf_dot(m, wi) > MF_R(0.0) : mf_dot(m, wi) < MF_R(0.0);
 }
 
+/* 1 when eta is a usable index and w a finite direction off the horizon */
+MF_INLINE int mf__dielectric_ok(mf_vec3 w, mf_real eta)
+{
+    return eta > MF_R(0.0) && eta < MF_BIG && MF_FABS(w.x) + MF_FABS(w.y) + MF_FABS(w.z) < MF_BIG && w.z != MF_R(0.0);
+}
+
 /* Prepares (wo, wi, eta) for the evaluation: inverts both when wo is below;
  * 0 when there is nothing to evaluate. */
 MF_INLINE int mf__dielectric_setup(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta)
 {
-    if (!(*eta > MF_R(0.0)) || !(*eta < MF_BIG)) return 0;
-    if (!(MF_FABS(wo->x) + MF_FABS(wo->y) + MF_FABS(wo->z) < MF_BIG) || !(MF_FABS(wi->x) + MF_FABS(wi->y) + MF_FABS(wi->z) < MF_BIG))
-        return 0;   /* NaN or infinite */
-    if (wo->z == MF_R(0.0) || wi->z == MF_R(0.0)) return 0;
+    if (!mf__dielectric_ok(*wo, *eta) || !mf__dielectric_ok(*wi, *eta)) return 0;   /* NaN, infinite, horizon */
     if (wo->z < MF_R(0.0)) {
         *wo = mf_scale(*wo, MF_R(-1.0));
         *wi = mf_scale(*wi, MF_R(-1.0));
@@ -1985,8 +1976,7 @@ MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta,
 {
     mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     mf_real s = MF_R(1.0), F;
-    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(MF_FABS(wo.x) + MF_FABS(wo.y) + MF_FABS(wo.z) < MF_BIG) || wo.z == MF_R(0.0))
-        return zero;
+    if (!mf__dielectric_ok(wo, eta)) return zero;
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; s = MF_R(-1.0); }
     m = mf_sample_visible(d, wo, u1, u2);
     if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return zero;

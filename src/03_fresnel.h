@@ -44,15 +44,6 @@ MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real
     return mf_clamp(MF_R(0.5) * (rp + rs), MF_R(0.0), MF_R(1.0));
 }
 
-/* Schlick's approximation f0 + (1 - f0)(1 - cos)^5. */
-MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
-{
-    mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0));
-    if (!(m == m)) m = MF_R(0.0);
-    f0 = mf_clamp(f0, MF_R(0.0), MF_R(1.0));
-    mf_real m2 = m * m;
-    return f0 + (MF_R(1.0) - f0) * m2 * m2 * m;
-}
 
 /* Normal-incidence reflectance of a dielectric of relative index eta,
  * ((eta - 1) / (eta + 1))^2, and the eta > 1 giving f0 (f0 in [0, 1), clamped
@@ -82,6 +73,11 @@ MF_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_th
     f90 = mf_clamp(f90, MF_R(0.0), MF_R(1.0));
     m2 = m * m;
     return f0 + (f90 - f0) * m2 * m2 * m;
+}
+/* Schlick's approximation f0 + (1 - f0)(1 - cos)^5: the f90 = 1 case. */
+MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
+{
+    return mf_fresnel_schlick_f90(f0, MF_R(1.0), cos_theta);
 }
 
 /* Artist-friendly conductor Fresnel (Gulbrandsen 2014, "Artist Friendly

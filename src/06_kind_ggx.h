@@ -30,17 +30,20 @@ MF_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 }
 
 /* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3), before the
- * final normalization; w need not be unit. (0,0,1) for degenerate input. */
-MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+ * final normalization; w need not be unit. (0,0,1) for degenerate input. k
+ * scales the cap's lower bound -k v.z: 1 is the whole visible hemisphere, k < 1
+ * the bounded cap of Eto & Tokuyoshi 2023 (mf_ggx_sample_visible_bounded). */
+MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
 {
     mf_vec3 v, h;
-    mf_real phi, z, s, l2;
+    mf_real phi, z, s, l2, b;
     v = mf_vec3_make(ax * w.x, ay * w.y, w.z);
     l2 = mf_dot(v, v);
     if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
     phi = MF_R(2.0) * MF_PI * u1;
-    z = (MF_R(1.0) - u2) * (MF_R(1.0) + v.z) - v.z;          /* cap of the visible hemisphere */
+    b = k * v.z;
+    z = (MF_R(1.0) - u2) * (MF_R(1.0) + b) - b;              /* cap of the visible hemisphere */
     s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
     h = mf_vec3_make(s * MF_COS(phi) + v.x, s * MF_SIN(phi) + v.y, z + v.z);
     h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
@@ -51,7 +54,7 @@ MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_re
 {
     mf_vec3 h;
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    h = mf__ggx_vndf_unnormalized(ax, ay, w, u1, u2);
+    h = mf__ggx_vndf_unnormalized(ax, ay, w, u1, u2, MF_R(1.0));
     return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 

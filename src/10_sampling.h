@@ -44,7 +44,7 @@ MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_r
     }
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     w = mf_mat2_apply(d->Minv, w);   /* the samplers normalize their view themselves */
-    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2);
+    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
     else m = mf__ndf_sample_visible(d, w, u1, u2);
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }

@@ -88,23 +88,12 @@ MF_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
 }
 MF_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
-    mf_vec3 v, h;
-    mf_real ax, ay, l2, phi, b, z, s;
+    mf_vec3 h;
     if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
     if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    ax = d->ax; ay = d->ay;
-    v = mf_vec3_make(ax * wo.x, ay * wo.y, wo.z);              /* the hemisphere configuration */
-    l2 = mf_dot(v, v);
-    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
-    phi = MF_R(2.0) * MF_PI * mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    b = mf__ggx_bounded_k(ax, ay, wo) * v.z;                    /* the cap's lower bound -b */
-    z = (MF_R(1.0) - mf_clamp(u2, MF_R(0.0), MF_R(1.0))) * (MF_R(1.0) + b) - b;
-    s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
-    h = mf_vec3_make(ax * (s * MF_COS(phi) + v.x), ay * (s * MF_SIN(phi) + v.y), mf_max(z + v.z, MF_R(0.0)));
-    l2 = mf_dot(h, h);
-    if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    return mf_scale(h, MF_R(1.0) / MF_SQRT(l2));
+    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf_clamp(u1, MF_R(0.0), MF_R(1.0)), mf_clamp(u2, MF_R(0.0), MF_R(1.0)),
+                                  mf__ggx_bounded_k(d->ax, d->ay, wo));
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 /* Density per unit solid angle of wi = reflect(wo, wm) for wm from
  * mf_ggx_sample_visible_bounded (paper Listing 2): D(wm) / (2 (k wo.z + t)),

@@ -61,14 +61,17 @@ MF_INLINE int mf__dielectric_half(mf_vec3 wo, mf_vec3 wi, mf_real e, mf_vec3 *h)
     return wi.z > MF_R(0.0) ? mf_dot(m, wi) > MF_R(0.0) : mf_dot(m, wi) < MF_R(0.0);
 }
 
+/* 1 when eta is a usable index and w a finite direction off the horizon */
+MF_INLINE int mf__dielectric_ok(mf_vec3 w, mf_real eta)
+{
+    return eta > MF_R(0.0) && eta < MF_BIG && MF_FABS(w.x) + MF_FABS(w.y) + MF_FABS(w.z) < MF_BIG && w.z != MF_R(0.0);
+}
+
 /* Prepares (wo, wi, eta) for the evaluation: inverts both when wo is below;
  * 0 when there is nothing to evaluate. */
 MF_INLINE int mf__dielectric_setup(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta)
 {
-    if (!(*eta > MF_R(0.0)) || !(*eta < MF_BIG)) return 0;
-    if (!(MF_FABS(wo->x) + MF_FABS(wo->y) + MF_FABS(wo->z) < MF_BIG) || !(MF_FABS(wi->x) + MF_FABS(wi->y) + MF_FABS(wi->z) < MF_BIG))
-        return 0;   /* NaN or infinite */
-    if (wo->z == MF_R(0.0) || wi->z == MF_R(0.0)) return 0;
+    if (!mf__dielectric_ok(*wo, *eta) || !mf__dielectric_ok(*wi, *eta)) return 0;   /* NaN, infinite, horizon */
     if (wo->z < MF_R(0.0)) {
         *wo = mf_scale(*wo, MF_R(-1.0));
         *wi = mf_scale(*wi, MF_R(-1.0));
@@ -124,8 +127,7 @@ MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta,
 {
     mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     mf_real s = MF_R(1.0), F;
-    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(MF_FABS(wo.x) + MF_FABS(wo.y) + MF_FABS(wo.z) < MF_BIG) || wo.z == MF_R(0.0))
-        return zero;
+    if (!mf__dielectric_ok(wo, eta)) return zero;
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; s = MF_R(-1.0); }
     m = mf_sample_visible(d, wo, u1, u2);
     if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return zero;
