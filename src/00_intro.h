@@ -173,5 +173,12 @@
  *          Gulbrandsen's artist conductor, hemispherical averages), GGX
  *          bounded visible-normal sampling (Eto & Tokuyoshi 2023). Rough
  *          dielectric BSDF (Walter et al. 2007) for every kind, both sides,
- *          eval / pdf / sample / weight, and mf_refract.
+ *          eval / pdf / sample / weight, and mf_refract. Beckmann visible
+ *          normals by safeguarded Halley steps from a view-dependent start.
+ *          Fuzz-found fixes: capped Lambda, D, pdf and LEADR variances, rejected
+ *          transforms with an overflowing inverse, LEADR map and LTC input
+ *          validation, exact IBM weights of sub-texel footprints, a sample
+ *          only where its pdf is positive, mf_clamp maps NaN to the lower
+ *          bound, MF_MICROSURFACE_MAX_ITERATIONS; bit-level checks that hold
+ *          under -ffast-math.
  */
