@@ -105,6 +105,13 @@
  *     MF_ALPHA_MAX); map builders reject normals with z < 1e-4.
  *   - Microsurface generation: at most MF_MICROSURFACE_MAX_ITERATIONS =
  *     100000 iterations (more is an invalid argument).
+ *   - Iterative solvers: every Newton, Halley, bisection, continued-fraction
+ *     and Nelder-Mead loop has a fixed cap (50 to 400 iterations; the sites
+ *     are listed with MF__SOLVER_DONE in the configuration section). A loop
+ *     stopped by its cap returns its bracketed or best point, never NaN;
+ *     the tests drive each site with adversarial input (u at 0, 1, NaN and
+ *     out of range; alpha 1e-4 and 1e4; grazing views; noise BRDFs for the
+ *     LTC fit) and reach the caps that can be reached.
  *   - Tabulated distributions: control angles span [0, pi/2] (the ends are
  *     snapped within 1e-4 rad), at most MF_TABULATED_MAX_POINTS = 4096; D is
  *     linear in theta between them; Lambda interpolates a projected-area table
@@ -377,6 +384,23 @@ typedef float mf_real;
 #include <stdlib.h>
 #define MF_MALLOC(n) malloc(n)
 #define MF_FREE(p) free(p)
+#endif
+
+/* Iterative solvers: every Newton, Halley, bisection, continued-fraction and
+ * Nelder-Mead loop has a fixed iteration cap. MF__SOLVER_DONE(site, it, cap)
+ * runs when such a loop ends, it = iterations taken (it == cap: stopped at the
+ * cap without converging). Empty by default; the tests define it to record
+ * the iterations each site takes on adversarial input. Sites: */
+#define MF__SITE_BETACF 0      /* incomplete-beta continued fraction, 300 */
+#define MF__SITE_PHI_COS 1     /* azimuth of the visible-normal samplers, 60 */
+#define MF__SITE_NUM_VNDF 2    /* numerical visible-normal inversion, 50 */
+#define MF__SITE_TAB_THETA 3   /* tabulated theta inversion, 60 */
+#define MF__SITE_TAB_PHI 4     /* tabulated anisotropic azimuth, 60 */
+#define MF__SITE_BECKMANN 5    /* Beckmann visible slope (Halley), 60 */
+#define MF__SITE_LTC_FIT 6     /* Nelder-Mead of the LTC fit, 400 per restart */
+#define MF__SITE_COUNT 7
+#ifndef MF__SOLVER_DONE
+#define MF__SOLVER_DONE(site, it, cap) ((void)0)
 #endif
 
 /* Module opt-outs (define before including, the same in every file):
@@ -892,6 +916,7 @@ MF_INLINE mf_real mf__betacf(mf_real a, mf_real b, mf_real x)
         d = MF_R(1.0) / d; del = d * c; h *= del;
         if (MF_FABS(del - MF_R(1.0)) < MF_R(4.0) * MF_EPS) break;
     }
+    MF__SOLVER_DONE(MF__SITE_BETACF, m > 300 ? 300 : m, 300);
     return h;
 }
 MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
@@ -3150,6 +3175,7 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
     for (i = 0; i < 60; ++i)
         if (mf__newton_step(&phi, c * phi + MF_SIN(phi) - u * total, c + MF_COS(phi), &lo, &hi, MF_R(4.0) * MF_EPS))
             break;
+    MF__SOLVER_DONE(MF__SITE_PHI_COS, i, 60);
     return sgn * phi;
 }
 
@@ -3279,6 +3305,7 @@ MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_
         df *= MF_R(1.0) + MF_R(0.5) * r * (MF_R(2.0) * x + tv / mf_max(s, MF_R(1e-30)));
         if (mf__newton_step(&x, f, df, &lo, &hi, MF__HALLEY_TOL * mf_min(MF_R(1.0) + MF_FABS(x), mu - x))) break;
     }
+    MF__SOLVER_DONE(MF__SITE_BECKMANN, i, 60);
     *sx = x;
 }
 /* D, homogeneous of degree -4: N / ((sin^2 + a^2 cos^2)^gamma |wm|^4) */
@@ -3687,6 +3714,7 @@ MF_INLINE mf_real mf__tab_invert(const mf_tabulated *t, mf_real ax, mf_real ay, 
         mf_real df = MF_R(2.0) * MF_PI * mf_max(da + sl * (x - ta), MF_R(0.0)) * MF_COS(x) * MF_SIN(x);
         if (mf__newton_step(&x, f, df, &blo, &bhi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + x))) break;
     }
+    MF__SOLVER_DONE(MF__SITE_TAB_THETA, it, 60);
     return x;
 }
 
@@ -3719,6 +3747,7 @@ MF_COLD mf_vec3 mf__tabulated_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
             if (mf__newton_step(&phi, phi + MF_R(0.5) * k * MF_SIN(MF_R(2.0) * phi) - target,
                                 MF_R(1.0) + k * MF_COS(MF_R(2.0) * phi), &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + phi)))
                 break;
+        MF__SOLVER_DONE(MF__SITE_TAB_PHI, i, 60);
     }
     cp = MF_COS(phi); sp = MF_SIN(phi);
     if (t->aniso) { ax = cp * cp * t->wx; ay = sp * sp * t->wy; }
@@ -3989,6 +4018,7 @@ MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv
                 for (n = 0; n < MF__GL_N; ++n) dF += a[n] * P[n];
                 if (mf__newton_step(&x, MF_R(0.5) * F - rem, MF_R(0.5) * dF, &lo, &hi, MF_R(8.0) * MF_EPS)) break;
             }
+            MF__SOLVER_DONE(MF__SITE_NUM_VNDF, i, 50);
             mf__iso_vis_h(&v, ((mf_real)k + MF_R(0.5) + MF_R(0.5) * x) * width, &t, &q);
         }
         tan2 = mf__iso_tan2(d, t, q);
@@ -5293,6 +5323,7 @@ static mf_real mf__nelder_mead(const mf__fit_ctx *c, mf_real *x, mf_real step, i
             }
         }
     }
+    MF__SOLVER_DONE(MF__SITE_LTC_FIT, it, max_iter);
     {
         int lo = 0;
         for (i = 1; i < 4; ++i) if (f[i] < f[lo]) lo = i;

@@ -97,6 +97,13 @@
  *     MF_ALPHA_MAX); map builders reject normals with z < 1e-4.
  *   - Microsurface generation: at most MF_MICROSURFACE_MAX_ITERATIONS =
  *     100000 iterations (more is an invalid argument).
+ *   - Iterative solvers: every Newton, Halley, bisection, continued-fraction
+ *     and Nelder-Mead loop has a fixed cap (50 to 400 iterations; the sites
+ *     are listed with MF__SOLVER_DONE in the configuration section). A loop
+ *     stopped by its cap returns its bracketed or best point, never NaN;
+ *     the tests drive each site with adversarial input (u at 0, 1, NaN and
+ *     out of range; alpha 1e-4 and 1e4; grazing views; noise BRDFs for the
+ *     LTC fit) and reach the caps that can be reached.
  *   - Tabulated distributions: control angles span [0, pi/2] (the ends are
  *     snapped within 1e-4 rad), at most MF_TABULATED_MAX_POINTS = 4096; D is
  *     linear in theta between them; Lambda interpolates a projected-area table

@@ -185,6 +185,23 @@ typedef float mf_real;
 #define MF_FREE(p) free(p)
 #endif
 
+/* Iterative solvers: every Newton, Halley, bisection, continued-fraction and
+ * Nelder-Mead loop has a fixed iteration cap. MF__SOLVER_DONE(site, it, cap)
+ * runs when such a loop ends, it = iterations taken (it == cap: stopped at the
+ * cap without converging). Empty by default; the tests define it to record
+ * the iterations each site takes on adversarial input. Sites: */
+#define MF__SITE_BETACF 0      /* incomplete-beta continued fraction, 300 */
+#define MF__SITE_PHI_COS 1     /* azimuth of the visible-normal samplers, 60 */
+#define MF__SITE_NUM_VNDF 2    /* numerical visible-normal inversion, 50 */
+#define MF__SITE_TAB_THETA 3   /* tabulated theta inversion, 60 */
+#define MF__SITE_TAB_PHI 4     /* tabulated anisotropic azimuth, 60 */
+#define MF__SITE_BECKMANN 5    /* Beckmann visible slope (Halley), 60 */
+#define MF__SITE_LTC_FIT 6     /* Nelder-Mead of the LTC fit, 400 per restart */
+#define MF__SITE_COUNT 7
+#ifndef MF__SOLVER_DONE
+#define MF__SOLVER_DONE(site, it, cap) ((void)0)
+#endif
+
 /* Module opt-outs (define before including, the same in every file):
  *   MF_NO_LEADR        LEADR moments and maps (the non-centered Beckmann kind
  *                      of mf_ndf stays)

@@ -91,6 +91,7 @@ MF_INLINE mf_real mf__betacf(mf_real a, mf_real b, mf_real x)
         d = MF_R(1.0) / d; del = d * c; h *= del;
         if (MF_FABS(del - MF_R(1.0)) < MF_R(4.0) * MF_EPS) break;
     }
+    MF__SOLVER_DONE(MF__SITE_BETACF, m > 300 ? 300 : m, 300);
     return h;
 }
 MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
@@ -137,6 +138,7 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
     for (i = 0; i < 60; ++i)
         if (mf__newton_step(&phi, c * phi + MF_SIN(phi) - u * total, c + MF_COS(phi), &lo, &hi, MF_R(4.0) * MF_EPS))
             break;
+    MF__SOLVER_DONE(MF__SITE_PHI_COS, i, 60);
     return sgn * phi;
 }
 

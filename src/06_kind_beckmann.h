@@ -118,5 +118,6 @@ MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_
         df *= MF_R(1.0) + MF_R(0.5) * r * (MF_R(2.0) * x + tv / mf_max(s, MF_R(1e-30)));
         if (mf__newton_step(&x, f, df, &lo, &hi, MF__HALLEY_TOL * mf_min(MF_R(1.0) + MF_FABS(x), mu - x))) break;
     }
+    MF__SOLVER_DONE(MF__SITE_BECKMANN, i, 60);
     *sx = x;
 }

@@ -277,6 +277,7 @@ MF_INLINE mf_real mf__tab_invert(const mf_tabulated *t, mf_real ax, mf_real ay, 
         mf_real df = MF_R(2.0) * MF_PI * mf_max(da + sl * (x - ta), MF_R(0.0)) * MF_COS(x) * MF_SIN(x);
         if (mf__newton_step(&x, f, df, &blo, &bhi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + x))) break;
     }
+    MF__SOLVER_DONE(MF__SITE_TAB_THETA, it, 60);
     return x;
 }
 
@@ -309,6 +310,7 @@ MF_COLD mf_vec3 mf__tabulated_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
             if (mf__newton_step(&phi, phi + MF_R(0.5) * k * MF_SIN(MF_R(2.0) * phi) - target,
                                 MF_R(1.0) + k * MF_COS(MF_R(2.0) * phi), &lo, &hi, MF_R(4.0) * MF_EPS * (MF_R(1.0) + phi)))
                 break;
+        MF__SOLVER_DONE(MF__SITE_TAB_PHI, i, 60);
     }
     cp = MF_COS(phi); sp = MF_SIN(phi);
     if (t->aniso) { ax = cp * cp * t->wx; ay = sp * sp * t->wy; }

@@ -133,6 +133,7 @@ MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv
                 for (n = 0; n < MF__GL_N; ++n) dF += a[n] * P[n];
                 if (mf__newton_step(&x, MF_R(0.5) * F - rem, MF_R(0.5) * dF, &lo, &hi, MF_R(8.0) * MF_EPS)) break;
             }
+            MF__SOLVER_DONE(MF__SITE_NUM_VNDF, i, 50);
             mf__iso_vis_h(&v, ((mf_real)k + MF_R(0.5) + MF_R(0.5) * x) * width, &t, &q);
         }
         tan2 = mf__iso_tan2(d, t, q);

@@ -411,6 +411,7 @@ static mf_real mf__nelder_mead(const mf__fit_ctx *c, mf_real *x, mf_real step, i
             }
         }
     }
+    MF__SOLVER_DONE(MF__SITE_LTC_FIT, it, max_iter);
     {
         int lo = 0;
         for (i = 1; i < 4; ++i) if (f[i] < f[lo]) lo = i;

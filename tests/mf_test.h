@@ -16,11 +16,14 @@ extern "C" {
 #endif
 void *mft_malloc(size_t n);
 void mft_free(void *p);
+/* ... and reports the iterations of every solver loop (test_fuzzfound.c) */
+void mft_solver_done(int site, int it, int cap);
 #ifdef __cplusplus
 }
 #endif
 #define MF_MALLOC(n) mft_malloc(n)
 #define MF_FREE(p) mft_free(p)
+#define MF__SOLVER_DONE(site, it, cap) mft_solver_done((site), (it), (cap))
 #include "microfacet.h"
 
 #ifdef __cplusplus

@@ -352,6 +352,13 @@ static mf_result b_gonio(void *c)
     mf_gonio_release(&g);
     return r;
 }
+static mf_real mft_lambert(mf_vec3 wo, mf_vec3 wi, void *c) { (void)wo; (void)c; return wi.z > 0 ? wi.z * MF_INV_PI : MF_R(0.0); }
+static mf_result b_ltc_fit(void *c)
+{
+    mf_ltc_fit_result r;
+    mf_ndf d = mf_ggx(MF_R(0.4), MF_R(0.4));
+    return c ? mf_ltc_fit(NULL, mft_lambert, NULL, MF_R(0.6), NULL, &r) : mf_ltc_fit(&d, NULL, NULL, MF_R(0.6), NULL, &r);
+}
 static mf_result b_ltc_table(void *c)
 {
     mf_ltc_table t;
@@ -406,6 +413,8 @@ static void allocator_and_sizes(void)
     mft_fail_sweep("mf_microsurface_integrate", b_integrate, NULL);
     mft_fail_sweep("mf_gonio_init + mf_gonio_measure", b_gonio, NULL);
     mft_fail_sweep("mf_ltc_table_build", b_ltc_table, NULL);
+    mft_fail_sweep("mf_ltc_fit (distribution)", b_ltc_fit, NULL);
+    mft_fail_sweep("mf_ltc_fit (BRDF callback)", b_ltc_fit, h8);
     free(saved);
     /* sizes: out of range -> invalid argument; in range but too large for
      * the allocator (it refuses every call here) -> out of memory, without
@@ -443,10 +452,132 @@ static void allocator_and_sizes(void)
     free(n16); free(n8);
 }
 
+/* ---- 3: every solver loop ends within its cap on adversarial input ---- */
+
+static long mft_sv_calls[MF__SITE_COUNT], mft_sv_capped[MF__SITE_COUNT];
+static int mft_sv_max[MF__SITE_COUNT], mft_sv_cap[MF__SITE_COUNT];
+void mft_solver_done(int site, int it, int cap)
+{
+    if (site < 0 || site >= MF__SITE_COUNT) return;
+    ++mft_sv_calls[site];
+    if (it > mft_sv_max[site]) mft_sv_max[site] = it;
+    if (it >= cap) ++mft_sv_capped[site];
+    mft_sv_cap[site] = cap;
+}
+static void mft_sv_reset(void)
+{
+    int s;
+    for (s = 0; s < MF__SITE_COUNT; ++s) mft_sv_calls[s] = mft_sv_capped[s] = mft_sv_max[s] = mft_sv_cap[s] = 0;
+}
+/* adversarial random numbers: the ends, one ulp inside them, NaN */
+static mf_real mft_adv_u(int i)
+{
+    const double u[] = { 0.0, 1e-30, 5.9604644775390625e-08, 0.25, 0.5, 0.5000001, 0.999, 0.9999999,
+                         1.0 - 5.9604644775390625e-08, 1.0, 2.0, -1.0 };
+    if (i == 12) return (mf_real)NAN;
+    return (mf_real)u[i];
+}
+#define MFT_ADV_U 13
+static int mft_finite3(mf_vec3 v) { return fin((double)v.x) && fin((double)v.y) && fin((double)v.z); }
+/* a deterministic BRDF that is noise on a narrow lobe (cos^10): the fit
+ * error has no minimum Nelder-Mead can settle in */
+static mf_real mft_noise_brdf(mf_vec3 wo, mf_vec3 wi, void *ctx)
+{
+    unsigned h = 2166136261u;
+    const unsigned char *b = (const unsigned char *)&wi;
+    size_t i;
+    (void)wo; (void)ctx;
+    for (i = 0; i < sizeof wi; ++i) h = (h ^ b[i]) * 16777619u;
+    return wi.z > 0 ? (mf_real)(h >> 8) / (mf_real)16777216.0 * (mf_real)pow((double)wi.z, 10.0) : MF_R(0.0);
+}
+static void mft_sv_check(int site, const char *name, int cap_reachable, int finite)
+{
+    char msg[200];
+    int ok = mft_sv_calls[site] > 0 && mft_sv_max[site] <= mft_sv_cap[site] && finite &&
+             (!cap_reachable || mft_sv_capped[site] > 0);
+    snprintf(msg, sizeof msg, "3: %s: %ld solves on adversarial input, at most %d of %d iterations%s, results finite",
+             name, mft_sv_calls[site], mft_sv_max[site], mft_sv_cap[site],
+             cap_reachable ? " (the cap reached and handled)" : "");
+    if (mft_verbose) printf("     %s\n", msg);
+    MFT_CHECK(ok, msg);
+}
+static void solvers_adversarial(void)
+{
+    mf_vec3 views[6];
+    mf_ndf kinds[5];
+    int okf = 1, i, j, k, v;
+    views[0] = mf_vec3_make(0, 0, 1);
+    views[1] = mf_normalize(mf_vec3_make(MF_R(1e-7), 0, 1));
+    views[2] = mf_normalize(mf_vec3_make(1, 0, 1));
+    views[3] = mf_normalize(mf_vec3_make(1, MF_R(0.3), MF_R(0.02)));
+    views[4] = mf_normalize(mf_vec3_make(1, 0, MF_R(1e-6)));
+    views[5] = mf_vec3_make(1, 0, 0);
+    mft_sv_reset();
+    /* continued fraction: a = b = 1e9 at the switch point x = 1/2 needs
+     * some 1e4 terms; the cap (300) stops it, the result stays in [0, 1] */
+    {
+        mf_real r = mf__betainc(MF_R(1e9), MF_R(1e9), MF_R(0.5), MF_R(0.0));
+        okf &= r >= MF_R(0.0) && r <= MF_R(1.0);
+        for (i = 0; i < MFT_ADV_U; ++i) {
+            r = mf__betainc(MF_R(0.5), MF_R(500.0), mft_adv_u(i), MF_R(0.0));
+            okf &= r == r;
+        }
+        mft_sv_check(MF__SITE_BETACF, "incomplete beta continued fraction", 1, okf);
+    }
+    /* samplers: every kind whose sampler iterates, every view, adversarial u */
+    kinds[0] = mf_gtr(MF_R(0.0015), MF_R(4.0));
+    kinds[1] = mf_gtr(MF_R(0.3), MF_R(0.5));
+    kinds[2] = mf_student_t(MF_R(0.5), MF_R(0.5), MF_R(1.55));
+    kinds[3] = mf_student_t(MF_R(1e-4), MF_R(1e-4), MF_R(1000.0));
+    kinds[4] = mf_beckmann(MF_R(1e-4), MF_R(1e-4));
+    okf = 1;
+    for (k = 0; k < 7; ++k)
+        for (v = 0; v < 6; ++v)
+            for (i = 0; i < MFT_ADV_U; ++i)
+                for (j = 0; j < MFT_ADV_U; ++j) {
+                    mf_ndf d = k < 5 ? kinds[k] : mf_beckmann(k == 5 ? MF_R(1.0) : MF_R(1e4), MF_R(0.01));
+                    mf_vec3 m = mf_sample_visible(&d, views[v], mft_adv_u(i), mft_adv_u(j));
+                    mf_vec3 n = mf_sample_D(&d, mft_adv_u(i), mft_adv_u(j));
+                    okf &= mft_finite3(m) && mft_finite3(n);
+                }
+    mft_sv_check(MF__SITE_PHI_COS, "visible-normal azimuth", 0, okf);
+    mft_sv_check(MF__SITE_NUM_VNDF, "numerical visible-normal inversion", 0, okf);
+    mft_sv_check(MF__SITE_BECKMANN, "Beckmann visible slope (Halley)", 0, okf);
+    /* tabulated: a spike, a plateau with a hole and an anisotropic pair */
+    {
+        mf_tabulated t;
+        mf_real th[5] = { 0, MF_R(1e-4), MF_R(0.7), MF_R(0.7001), MF_R(1.5707963) };
+        mf_real dx[5] = { MF_R(1e12), MF_R(1e-12), 0, 1, 0 }, dy[5] = { 1, 0, MF_R(1e6), 0, MF_R(1e-30) };
+        okf = 1;
+        for (k = 0; k < 2; ++k) {
+            mf_ndf d;
+            if (mf_tabulated_build(&t, th, dx, k ? dy : NULL, 5) != MF_SUCCESS) { okf = 0; continue; }
+            d = mf_tabulated_ndf(&t);
+            for (v = 0; v < 6; ++v)
+                for (i = 0; i < MFT_ADV_U; ++i)
+                    for (j = 0; j < MFT_ADV_U; ++j)
+                        okf &= mft_finite3(mf_sample_visible(&d, views[v], mft_adv_u(i), mft_adv_u(j))) &&
+                               mft_finite3(mf_sample_D(&d, mft_adv_u(i), mft_adv_u(j)));
+            mf_tabulated_release(&t);
+        }
+        mft_sv_check(MF__SITE_TAB_THETA, "tabulated theta inversion", 0, okf);
+        mft_sv_check(MF__SITE_TAB_PHI, "tabulated anisotropic azimuth", 0, okf);
+    }
+    /* Nelder-Mead on a noise BRDF never meets its tolerance: both restarts
+     * stop at 400 iterations and the fit is still a valid LTC */
+    {
+        mf_ltc_fit_result r;
+        mf_result res = mf_ltc_fit(NULL, mft_noise_brdf, NULL, MF_R(0.7), NULL, &r);
+        okf = res == MF_SUCCESS && r.error == r.error && mf_ltc_eval(&r.ltc, mf_vec3_make(0, 0, 1)) >= MF_R(0.0);
+        mft_sv_check(MF__SITE_LTC_FIT, "LTC fit (Nelder-Mead)", 1, okf);
+    }
+}
+
 void test_fuzzfound(void)
 {
     defects_ndf();
     defects_leadr_ltc();
     defects_ibm();
     allocator_and_sizes();
+    solvers_adversarial();
 }
