@@ -138,6 +138,10 @@
  *
  * FAST MATH (-ffast-math, __FAST_MATH__)
  *
+ *   Detected: MF_FAST_MATH is 1 under gcc and clang -ffast-math or
+ *   -ffinite-math-only (MSVC /fp:fast is not detectable), so a renderer can
+ *   test it, e.g. to add its own NaN guards; the header itself emits no
+ *   warning.
  *   The compiler may then assume that no value is NaN or Inf and fold the
  *   comparisons this header uses to catch them. What still holds: builders
  *   and loaders never let NaN or Inf data index memory (the IBM builder and
@@ -384,6 +388,15 @@ typedef float mf_real;
 #include <stdlib.h>
 #define MF_MALLOC(n) malloc(n)
 #define MF_FREE(p) free(p)
+#endif
+
+/* MF_FAST_MATH is 1 where the compiler may assume that no value is NaN or
+ * Inf (gcc and clang -ffast-math or -ffinite-math-only), else 0: see FAST
+ * MATH at the top for what then still holds. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)
+#define MF_FAST_MATH 1
+#else
+#define MF_FAST_MATH 0
 #endif
 
 /* Iterative solvers: every Newton, Halley, bisection, continued-fraction and

@@ -130,6 +130,10 @@
  *
  * FAST MATH (-ffast-math, __FAST_MATH__)
  *
+ *   Detected: MF_FAST_MATH is 1 under gcc and clang -ffast-math or
+ *   -ffinite-math-only (MSVC /fp:fast is not detectable), so a renderer can
+ *   test it, e.g. to add its own NaN guards; the header itself emits no
+ *   warning.
  *   The compiler may then assume that no value is NaN or Inf and fold the
  *   comparisons this header uses to catch them. What still holds: builders
  *   and loaders never let NaN or Inf data index memory (the IBM builder and

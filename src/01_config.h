@@ -185,6 +185,15 @@ typedef float mf_real;
 #define MF_FREE(p) free(p)
 #endif
 
+/* MF_FAST_MATH is 1 where the compiler may assume that no value is NaN or
+ * Inf (gcc and clang -ffast-math or -ffinite-math-only), else 0: see FAST
+ * MATH at the top for what then still holds. */
+#if defined(__FAST_MATH__) || (defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__)
+#define MF_FAST_MATH 1
+#else
+#define MF_FAST_MATH 0
+#endif
+
 /* Iterative solvers: every Newton, Halley, bisection, continued-fraction and
  * Nelder-Mead loop has a fixed iteration cap. MF__SOLVER_DONE(site, it, cap)
  * runs when such a loop ends, it = iterations taken (it == cap: stopped at the

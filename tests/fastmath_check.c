@@ -27,6 +27,7 @@ int main(void)
     unsigned int u = 0x7fc00000u;
     float fn;
     memcpy(&fn, &u, 4);
+    check(MF_FAST_MATH == 1, "MF_FAST_MATH detects -ffast-math");
     vnan_bits = fn;
     nan = (mf_real)vnan_bits;
     inf = (mf_real)(vinf_src * vinf_src);

@@ -68,4 +68,7 @@ void test_core(void)
     MFT_CHECK(!strcmp(mf_result_string(MF_SUCCESS), "success"), "mf_result_string");
     MFT_CHECK(strcmp(mf_result_string(MF_ERROR_INVALID_ARGUMENT), "unknown result") != 0, "error names");
     MFT_CHECK(version_documented(), "version macros match the header's top comment and newest revision line");
+#if !defined(__FAST_MATH__)
+    MFT_CHECK(MF_FAST_MATH == 0, "MF_FAST_MATH is 0 without -ffast-math");
+#endif
 }
