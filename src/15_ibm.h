@@ -255,6 +255,27 @@ MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
  * mf_ibm_set_shadowing is not saved: set it again after loading. */
 MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
 MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
+/* Area of the unit square where a linear function is >= 0, from its values
+ * v[0..3] at the corners (0,0), (1,0), (1,1), (0,1): the triangle, trapezoid
+ * or pentagon that one line cuts, each from crossing fractions v_i / (v_i -
+ * v_j) of opposite-signed values (no cancellation). */
+MF_INLINE mf_real mf__ibm_square_cut(const mf_real *v)
+{
+    int i, neg = 0, m = 0;
+    for (i = 0; i < 4; ++i) if (v[i] < MF_R(0.0)) { ++neg; m |= 1 << i; }
+    if (neg == 0) return MF_R(1.0);
+    if (neg == 4) return MF_R(0.0);
+    for (i = 0; i < 4; ++i) {
+        int p = (i + 3) & 3, n = (i + 1) & 3, o = (i + 2) & 3;
+        mf_real a = v[i], tp = a / (a - v[p]), tn = a / (a - v[n]);
+        if (neg == 1 && (m >> i & 1)) return MF_R(1.0) - MF_R(0.5) * tp * tn;   /* corner i cut off */
+        if (neg == 3 && !(m >> i & 1)) return MF_R(0.5) * tp * tn;              /* only corner i kept */
+        if (neg == 2 && (m >> i & 1) && (m >> n & 1))                          /* edge i..n below */
+            return MF_R(1.0) - MF_R(0.5) * (tp + v[n] / (v[n] - v[o]));
+    }
+    return MF_R(-1.0);   /* opposite corners below: not a single line */
+}
+
 /* @cold */
 /* one field of `w` bits (w <= 32) of a packed array */
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
@@ -390,6 +411,7 @@ typedef struct mf__ibm_piece {
     int n, rect;
     mf_real x[12], y[12];           /* vertices relative to the origin, counterclockwise */
     mf_real ea[12], eb[12], ec[12]; /* unit half-planes ea x + eb y + ec >= 0 */
+    mf_real elo[12], ehi[12];       /* least and largest of ea x + eb y over the unit square */
     mf_real rx0, ry0, rx1, ry1;     /* the rectangle (rect) */
 } mf__ibm_piece;
 
@@ -603,6 +625,8 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
         if (l > MF_R(0.0)) { a /= l; b /= l; }
         pc->ea[i] = a; pc->eb[i] = b;
+        pc->elo[i] = mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0));
+        pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
         pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
     return 1;
@@ -645,12 +669,17 @@ MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
         return w > MF_R(0.0) && h > MF_R(0.0) ? w * h : MF_R(0.0);
     }
     for (i = 0; i < pc->n; ++i) {
-        mf_real a = pc->ea[i], b = pc->eb[i], v = a * X + b * Y + pc->ec[i];
-        mf_real lo = v + mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0)), hi = v + mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
-        if (hi <= MF_R(0.0)) return MF_R(0.0);
-        if (lo < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
+        mf_real v = pc->ea[i] * X + pc->eb[i] * Y + pc->ec[i];
+        if (v + pc->ehi[i] <= MF_R(0.0)) return MF_R(0.0);
+        if (v + pc->elo[i] < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
     }
     if (nc == 0) return MF_R(1.0);
+    if (nc == 1) {   /* one edge cuts the texel (most boundary texels): closed form */
+        mf_real a = pc->ea[cut[0]], b = pc->eb[cut[0]], v[4], r;
+        v[0] = cv[0]; v[1] = cv[0] + a; v[2] = cv[0] + a + b; v[3] = cv[0] + b;
+        r = mf__ibm_square_cut(v);
+        if (r >= MF_R(0.0)) return r;
+    }
     xa[0] = MF_R(0.0); ya[0] = MF_R(0.0); xa[1] = MF_R(1.0); ya[1] = MF_R(0.0);
     xa[2] = MF_R(1.0); ya[2] = MF_R(1.0); xa[3] = MF_R(0.0); ya[3] = MF_R(1.0);
     for (i = 0; i < nc && n >= 3; ++i) {
@@ -756,10 +785,15 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const m
     return 0;
 }
 
-/* first index in [s, e) whose Morton code has bit `bit` set */
+/* first index in [s, e) whose Morton code has bit `bit` set: a linear scan
+ * of short ranges (predictable, one cache line), else binary search */
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
     const unsigned int *pos = ibm->data + ibm->pos_at;
+    if (e - s <= 24u) {
+        while (s < e && !((mf__ibm_get(pos, s, ibm->list_bits) >> bit) & 1u)) ++s;
+        return s;
+    }
     while (s < e) {
         unsigned int m = s + (e - s) / 2u;
         if ((mf__ibm_get(pos, m, ibm->list_bits) >> bit) & 1u) e = m;
