@@ -2976,6 +2976,27 @@ MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
  * mf_ibm_set_shadowing is not saved: set it again after loading. */
 MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
 MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
+/* Area of the unit square where a linear function is >= 0, from its values
+ * v[0..3] at the corners (0,0), (1,0), (1,1), (0,1): the triangle, trapezoid
+ * or pentagon that one line cuts, each from crossing fractions v_i / (v_i -
+ * v_j) of opposite-signed values (no cancellation). */
+MF_INLINE mf_real mf__ibm_square_cut(const mf_real *v)
+{
+    int i, neg = 0, m = 0;
+    for (i = 0; i < 4; ++i) if (v[i] < MF_R(0.0)) { ++neg; m |= 1 << i; }
+    if (neg == 0) return MF_R(1.0);
+    if (neg == 4) return MF_R(0.0);
+    for (i = 0; i < 4; ++i) {
+        int p = (i + 3) & 3, n = (i + 1) & 3, o = (i + 2) & 3;
+        mf_real a = v[i], tp = a / (a - v[p]), tn = a / (a - v[n]);
+        if (neg == 1 && (m >> i & 1)) return MF_R(1.0) - MF_R(0.5) * tp * tn;   /* corner i cut off */
+        if (neg == 3 && !(m >> i & 1)) return MF_R(0.5) * tp * tn;              /* only corner i kept */
+        if (neg == 2 && (m >> i & 1) && (m >> n & 1))                          /* edge i..n below */
+            return MF_R(1.0) - MF_R(0.5) * (tp + v[n] / (v[n] - v[o]));
+    }
+    return MF_R(-1.0);   /* opposite corners below: not a single line */
+}
+
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
 /* ======================================================================== */
@@ -4194,6 +4215,8 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d)
 typedef struct mf__ibm_fp {
     int mode, tx, ty;          /* POINT: the texel */
     int direct;                /* sum the covered texels directly (Eq. 5.2) */
+    int few;                   /* direct, and A is small (bounding box <= 16 texels) or thin */
+    int bx0, by0, bx1, by1;    /* direct: texels [bx0, bx1) x [by0, by1) (unwrapped) hold A */
     int rect;                  /* axis-aligned: every piece is a rectangle */
     int row0, row1;            /* period rows touched */
     mf_real x[4], y[4];        /* corners in texels, counterclockwise, center in the first period */
@@ -4209,6 +4232,7 @@ typedef struct mf__ibm_piece {
     int n, rect;
     mf_real x[12], y[12];           /* vertices relative to the origin, counterclockwise */
     mf_real ea[12], eb[12], ec[12]; /* unit half-planes ea x + eb y + ec >= 0 */
+    mf_real elo[12], ehi[12];       /* least and largest of ea x + eb y over the unit square */
     mf_real rx0, ry0, rx1, ry1;     /* the rectangle (rect) */
 } mf__ibm_piece;
 
@@ -4305,7 +4329,7 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
     int row, pieces = 0, edges_ok;
     p->mode = MF__IBM_NONE;
-    p->direct = 0;
+    p->direct = p->few = 0;
     p->full = MF_R(0.0);
     if (!f) return;
     /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
@@ -4354,17 +4378,26 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     p->row0 = (int)MF_FLOOR((p->cy - ey) / H);
     p->row1 = (int)MF_FLOOR((p->cy + ey) / H);
     if (p->row1 > p->row0 && p->cy + ey == (mf_real)p->row1 * H) --p->row1;
-    for (row = p->row0; row <= p->row1; ++row) {
-        mf_real c0, c1, f0, f1, nf = MF_R(0.0);
-        int n = mf__ibm_slab(ibm, p, row, xs, ys);
-        if (n < 3) continue;
-        mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
-        if (f1 >= f0) { nf = f1 - f0 + MF_R(1.0); p->full += nf; }
-        pieces += (int)(c1 - c0 + MF_R(1.0) - nf);
-        if (pieces > MF_IBM_MAX_PIECES) { p->full = MF_R(0.0); return; }
-    }
+    /* narrower than a period both ways: no full period and at most 4 cut
+     * cells, so the count is only needed for wider footprints */
+    if (!(MF_R(2.0) * ex < W && MF_R(2.0) * ey < H))
+        for (row = p->row0; row <= p->row1; ++row) {
+            mf_real c0, c1, f0, f1, nf = MF_R(0.0);
+            int n = mf__ibm_slab(ibm, p, row, xs, ys);
+            if (n < 3) continue;
+            mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
+            if (f1 >= f0) { nf = f1 - f0 + MF_R(1.0); p->full += nf; }
+            pieces += (int)(c1 - c0 + MF_R(1.0) - nf);
+            if (pieces > MF_IBM_MAX_PIECES) { p->full = MF_R(0.0); return; }
+        }
     p->mode = MF__IBM_EXACT;
     p->direct = p->full == MF_R(0.0) && MF_R(4.0) * ex * ey <= (mf_real)MF_IBM_DIRECT_TEXELS;
+    /* a few texels, or thin: their clipped areas give |A| (see mf__ibm_weights) */
+    p->few = p->direct && (MF_R(4.0) * ex * ey <= MF_R(16.0) || MF_R(32.0) * p->area <= MF_R(4.0) * ex * ey);
+    if (p->direct) {
+        p->bx0 = (int)MF_FLOOR(p->cx - ex); p->bx1 = (int)MF_CEIL(p->cx + ex);
+        p->by0 = (int)MF_FLOOR(p->cy - ey); p->by1 = (int)MF_CEIL(p->cy + ey);
+    }
 }
 
 /* The piece of slab (x, y, n) in column `col`, shifted to the first period;
@@ -4413,6 +4446,8 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
         if (l > MF_R(0.0)) { a /= l; b /= l; }
         pc->ea[i] = a; pc->eb[i] = b;
+        pc->elo[i] = mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0));
+        pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
         pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
     return 1;
@@ -4455,12 +4490,17 @@ MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
         return w > MF_R(0.0) && h > MF_R(0.0) ? w * h : MF_R(0.0);
     }
     for (i = 0; i < pc->n; ++i) {
-        mf_real a = pc->ea[i], b = pc->eb[i], v = a * X + b * Y + pc->ec[i];
-        mf_real lo = v + mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0)), hi = v + mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
-        if (hi <= MF_R(0.0)) return MF_R(0.0);
-        if (lo < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
+        mf_real v = pc->ea[i] * X + pc->eb[i] * Y + pc->ec[i];
+        if (v + pc->ehi[i] <= MF_R(0.0)) return MF_R(0.0);
+        if (v + pc->elo[i] < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
     }
     if (nc == 0) return MF_R(1.0);
+    if (nc == 1) {   /* one edge cuts the texel (most boundary texels): closed form */
+        mf_real a = pc->ea[cut[0]], b = pc->eb[cut[0]], v[4], r;
+        v[0] = cv[0]; v[1] = cv[0] + a; v[2] = cv[0] + a + b; v[3] = cv[0] + b;
+        r = mf__ibm_square_cut(v);
+        if (r >= MF_R(0.0)) return r;
+    }
     xa[0] = MF_R(0.0); ya[0] = MF_R(0.0); xa[1] = MF_R(1.0); ya[1] = MF_R(0.0);
     xa[2] = MF_R(1.0); ya[2] = MF_R(1.0); xa[3] = MF_R(0.0); ya[3] = MF_R(1.0);
     for (i = 0; i < nc && n >= 3; ++i) {
@@ -4475,7 +4515,6 @@ MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
  * |dx|, |dy| <= r, that are listed; slot maps a window cell to its list entry. */
 typedef struct mf__ibm_set {
     int cx, cy, r, side, n;
-    int lazy;                        /* bins of the window join when a texel of theirs is met */
     int bin[MF_IBM_MAX_WINDOW];
     short slot[MF_IBM_MAX_WINDOW];
     mf_real w[MF_IBM_MAX_WINDOW];    /* accumulated area, then weight */
@@ -4484,7 +4523,7 @@ typedef struct mf__ibm_set {
 MF_INLINE void mf__ibm_set_init(mf__ibm_set *s, int cx, int cy, int r)
 {
     int i;
-    s->cx = cx; s->cy = cy; s->r = r; s->side = 2 * r + 1; s->n = 0; s->lazy = 0;
+    s->cx = cx; s->cy = cy; s->r = r; s->side = 2 * r + 1; s->n = 0;
     for (i = 0; i < s->side * s->side; ++i) s->slot[i] = -1;
 }
 
@@ -4497,43 +4536,85 @@ MF_INLINE void mf__ibm_set_add(mf__ibm_set *s, int dx, int dy, int j)
     ++s->n;
 }
 
-/* list entry of a bin map value (ix | iy << s), or -1; a lazy set adds the
- * bin when it is in the neighbourhood (dx^2 + dy^2 <= r (r + 1)) */
-MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, mf__ibm_set *s, unsigned int v)
+/* list entry of a bin map value (ix | iy << s), or -1 */
+MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, const mf__ibm_set *s, unsigned int v)
 {
     int ix = (int)(v & ((1u << ibm->axis_bits) - 1u)), iy = (int)(v >> ibm->axis_bits);
-    int dx = ix - s->cx, dy = iy - s->cy, k;
+    int dx = ix - s->cx, dy = iy - s->cy;
     if (dx < -s->r || dx > s->r || dy < -s->r || dy > s->r) return -1;
-    k = s->slot[(dy + s->r) * s->side + dx + s->r];
-    if (k < 0 && s->lazy && dx * dx + dy * dy <= s->r * (s->r + 1)) {
-        k = s->n;
-        mf__ibm_set_add(s, dx, dy, ix + ibm->res * iy);
-    }
-    return k;
+    return s->slot[(dy + s->r) * s->side + dx + s->r];
 }
 
-/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin); returns the
- * piece's area as the texel areas add up (every bin, listed or not). */
-MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
+/* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin): a texel's bin
+ * is read first and its area clipped only when the bin is wanted. With
+ * `all`, every texel's area is clipped and their sum returned (the piece's
+ * area as the texel areas add up); otherwise 0. */
+MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s, int all)
 {
     mf_real tot = MF_R(0.0);
     int x, y;
     for (y = pc->by0; y < pc->by1; ++y)
         for (x = pc->bx0; x < pc->bx1; ++x) {
-            mf_real a = mf__ibm_texel_area(pc, x, y);
-            int k;
+            int k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)y * (size_t)ibm->width + (size_t)x, ibm->bin_bits));
+            mf_real a;
+            if (k < 0 && !all) continue;
+            a = mf__ibm_texel_area(pc, x, y);
             if (!(a > MF_R(0.0))) continue;
             tot += a;
-            k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)y * (size_t)ibm->width + (size_t)x, ibm->bin_bits));
             if (k >= 0) s->w[k] += a;
         }
     return tot;
 }
 
-/* first index in [s, e) whose Morton code has bit `bit` set */
+/* 1 if a texel of the direct footprint's bounding box (wrapped) has its bin
+ * within the neighbourhood of radius r around bin (cx, cy): an index-only
+ * test for footprints of a few texels, cheaper than listing the bins. */
+MF_INLINE int mf__ibm_direct_near(const mf_ibm *ibm, const mf__ibm_fp *p, int cx, int cy, int r)
+{
+    int x, y, W = ibm->width, H = ibm->height;
+    unsigned int m = (1u << ibm->axis_bits) - 1u;
+    for (y = p->by0; y < p->by1; ++y) {
+        int ty = y % H;
+        if (ty < 0) ty += H;
+        for (x = p->bx0; x < p->bx1; ++x) {
+            int tx = x % W, dx, dy;
+            unsigned int v;
+            if (tx < 0) tx += W;
+            v = mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits);
+            dx = (int)(v & m) - cx; dy = (int)(v >> ibm->axis_bits) - cy;
+            if (dx * dx + dy * dy <= r * (r + 1)) return 1;
+        }
+    }
+    return 0;
+}
+
+/* 1 if a texel of the direct footprint's bounding box (wrapped) is in a
+ * wanted bin: an index-only test that spares the clipping when none is. */
+MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const mf__ibm_set *s)
+{
+    int x, y, W = ibm->width, H = ibm->height;
+    for (y = p->by0; y < p->by1; ++y) {
+        int ty = y % H;
+        if (ty < 0) ty += H;
+        for (x = p->bx0; x < p->bx1; ++x) {
+            int tx = x % W;
+            if (tx < 0) tx += W;
+            if (mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits)) >= 0)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* first index in [s, e) whose Morton code has bit `bit` set: a linear scan
+ * of short ranges (predictable, one cache line), else binary search */
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
     const unsigned int *pos = ibm->data + ibm->pos_at;
+    if (e - s <= 24u) {
+        while (s < e && !((mf__ibm_get(pos, s, ibm->list_bits) >> bit) & 1u)) ++s;
+        return s;
+    }
     while (s < e) {
         unsigned int m = s + (e - s) / 2u;
         if ((mf__ibm_get(pos, m, ibm->list_bits) >> bit) & 1u) e = m;
@@ -4628,7 +4709,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
 MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
     mf_real tot, dtot = MF_R(0.0);
-    int i;
+    int i, direct = p->direct;
     if (p->mode == MF__IBM_NONE) { for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0); return; }
     if (p->mode == MF__IBM_POINT) {
         int k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)p->ty * (size_t)ibm->width + (size_t)p->tx, ibm->bin_bits));
@@ -4641,6 +4722,14 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         return;
     }
     for (i = 0; i < s->n; ++i) s->w[i] = p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]);
+    if (direct && !p->few) {
+        /* wanted bins with fewer texels than half the bounding box: their
+         * lists (kd traversal) cost less than visiting the box */
+        double texels = 0.0;
+        for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
+        if (2.0 * texels < (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
+    }
+    if (direct && !mf__ibm_direct_any(ibm, p, s)) return;   /* no wanted texel: all 0 */
     tot = p->full * (mf_real)ibm->width * (mf_real)ibm->height;
     {
         mf_real xs[12], ys[12], c0, c1, f0, f1, col;
@@ -4654,7 +4743,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
                 if (col >= f0 && col <= f1) continue;
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
                 tot += mf__ibm_shoelace(pc.x, pc.y, pc.n);
-                if (p->direct) dtot += mf__ibm_direct(ibm, &pc, s);
+                if (direct) dtot += mf__ibm_direct(ibm, &pc, s, p->few);
                 else
                     for (i = 0; i < s->n; i += MF_IBM_BATCH)
                         mf__ibm_traverse(ibm, &pc, s->bin + i, s->n - i < MF_IBM_BATCH ? s->n - i : MF_IBM_BATCH, s->w + i);
@@ -4662,11 +4751,12 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         }
     }
     /* |A| as the pieces add up, so that the weights of all bins sum to 1 even
-     * where float round-off moves the corners of a thin footprint; in the
-     * direct sum, as the texel areas themselves add up (the clipped texels
-     * and the shoelace of the pieces round differently: on a flat map, where
-     * one bin holds every texel, the weight is then exactly 1) */
-    if (p->direct && dtot > MF_R(0.0)) tot = dtot;
+     * where float round-off moves the corners of a thin footprint; for
+     * small or thin footprints (few), as the texel areas themselves add up
+     * (the clipped texels and the shoelace of the pieces round differently:
+     * on a flat map, where one bin holds every texel, the weight of a
+     * sub-texel footprint is then exactly 1) */
+    if (direct && p->few && dtot > MF_R(0.0)) tot = dtot;
     if (!(tot > MF_R(0.0))) tot = p->area;
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
@@ -4676,6 +4766,7 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     mf__ibm_fp p;
     mf__ibm_set s;
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
+    if (mf_ibm_bin_texels(ibm, bin) == 0) return MF_R(0.0);   /* empty bin: no footprint work */
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
@@ -4698,6 +4789,7 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
             if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
             if (mf_ibm_bin_texels(ibm, j) > 0) mf__ibm_set_add(&s, dx, dy, j);
         }
+    if (s.n == 0) return 0;   /* an empty neighbourhood: no footprint work */
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) { bins[i] = s.bin[i]; weights[i] = s.w[i]; }
@@ -4725,22 +4817,25 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
+    if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_near(ibm, &p, cx, cy, r)) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
-    if (p.mode == MF__IBM_POINT || (p.mode == MF__IBM_EXACT && p.direct)) s.lazy = 1;   /* few texels: their bins */
-    else
-        /* the kd traversal needs its bins up front: the non-empty bins of the
-         * neighbourhood that face wo (and wi when only f is wanted) */
-        for (dy = -r; dy <= r; ++dy)
-            for (dx = -r; dx <= r; ++dx) {
-                int j = (cx + dx) + b * (cy + dy);
-                mf_vec3 t;
-                if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-                if (mf_ibm_bin_texels(ibm, j) == 0) continue;
+    /* the non-empty bins of the neighbourhood; for a footprint of many
+     * texels only those that face wo (and wi when only f is wanted), which
+     * spares their traversal (small ones are checked after their weights) */
+    for (dy = -r; dy <= r; ++dy)
+        for (dx = -r; dx <= r; ++dx) {
+            int j = (cx + dx) + b * (cy + dy);
+            mf_vec3 t;
+            if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
+            if (mf_ibm_bin_texels(ibm, j) == 0) continue;
+            if (p.mode == MF__IBM_EXACT && !p.direct) {
                 t = mf_ibm_bin_normal(ibm, j);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
                 if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
-                mf__ibm_set_add(&s, dx, dy, j);
             }
+            mf__ibm_set_add(&s, dx, dy, j);
+        }
+    if (s.n == 0) return MF_R(0.0);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
