@@ -4566,10 +4566,11 @@ MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf_
     return tot;
 }
 
-/* 1 if a texel of the direct footprint's bounding box (wrapped) has its bin
- * within the neighbourhood of radius r around bin (cx, cy): an index-only
- * test for footprints of a few texels, cheaper than listing the bins. */
-MF_INLINE int mf__ibm_direct_near(const mf_ibm *ibm, const mf__ibm_fp *p, int cx, int cy, int r)
+/* 1 if a texel of the direct footprint's bounding box (wrapped) is wanted:
+ * its bin listed in s, or (s NULL) within the neighbourhood of radius r
+ * around bin (cx, cy). An index-only test that spares the clipping (and,
+ * for footprints of a few texels, listing the bins) when no texel is. */
+MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const mf__ibm_set *s, int cx, int cy, int r)
 {
     int x, y, W = ibm->width, H = ibm->height;
     unsigned int m = (1u << ibm->axis_bits) - 1u;
@@ -4581,26 +4582,12 @@ MF_INLINE int mf__ibm_direct_near(const mf_ibm *ibm, const mf__ibm_fp *p, int cx
             unsigned int v;
             if (tx < 0) tx += W;
             v = mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits);
+            if (s) {
+                if (mf__ibm_set_find(ibm, s, v) >= 0) return 1;
+                continue;
+            }
             dx = (int)(v & m) - cx; dy = (int)(v >> ibm->axis_bits) - cy;
             if (dx * dx + dy * dy <= r * (r + 1)) return 1;
-        }
-    }
-    return 0;
-}
-
-/* 1 if a texel of the direct footprint's bounding box (wrapped) is in a
- * wanted bin: an index-only test that spares the clipping when none is. */
-MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const mf__ibm_set *s)
-{
-    int x, y, W = ibm->width, H = ibm->height;
-    for (y = p->by0; y < p->by1; ++y) {
-        int ty = y % H;
-        if (ty < 0) ty += H;
-        for (x = p->bx0; x < p->bx1; ++x) {
-            int tx = x % W;
-            if (tx < 0) tx += W;
-            if (mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits)) >= 0)
-                return 1;
         }
     }
     return 0;
@@ -4729,7 +4716,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
         if (2.0 * texels < (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
     }
-    if (direct && !mf__ibm_direct_any(ibm, p, s)) return;   /* no wanted texel: all 0 */
+    if (direct && !mf__ibm_direct_any(ibm, p, s, 0, 0, 0)) return;   /* no wanted texel: all 0 */
     tot = p->full * (mf_real)ibm->width * (mf_real)ibm->height;
     {
         mf_real xs[12], ys[12], c0, c1, f0, f1, col;
@@ -4817,7 +4804,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
-    if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_near(ibm, &p, cx, cy, r)) return MF_R(0.0);
+    if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_any(ibm, &p, (const mf__ibm_set *)0, cx, cy, r)) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
     /* the non-empty bins of the neighbourhood; for a footprint of many
      * texels only those that face wo (and wi when only f is wanted), which
