@@ -777,6 +777,9 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const m
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
     const unsigned int *pos = ibm->data + ibm->pos_at;
+    /* all on one side (common where a bin's texels cluster): two reads */
+    if (s >= e || ((mf__ibm_get(pos, s, ibm->list_bits) >> bit) & 1u)) return s;
+    if (!((mf__ibm_get(pos, e - 1u, ibm->list_bits) >> bit) & 1u)) return e;
     if (e - s <= 24u) {
         while (s < e && !((mf__ibm_get(pos, s, ibm->list_bits) >> bit) & 1u)) ++s;
         return s;
