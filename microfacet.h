@@ -2903,7 +2903,13 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * weight is that of the whole map (n_bin / N) - exact when the footprint is a
  * union of whole periods, otherwise off by at most the cut cells' share of
  * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
- * the bin of the texel at the center, else 0; non-finite center: 0. */
+ * the bin of the texel at the center, else 0; non-finite center: 0.
+ * Cost: an empty bin (or, for the queries below, an empty neighbourhood)
+ * returns before any footprint work; footprints of up to
+ * MF_IBM_DIRECT_TEXELS bounding-box texels visit the box, reading each
+ * texel's bin before clipping it, unless the wanted bins hold fewer texels
+ * than half the box (then their lists are walked); larger ones traverse the
+ * kd-trees. A texel cut by one footprint edge gets its area in closed form. */
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
 /* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
