@@ -231,11 +231,20 @@ MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q)
     mf_real L = p->L, uq, ut, lw, llw, c2, s2;
     if (!(q > MF_R(0.0))) return MF_BIG;
     if (!(t > MF_R(0.0))) return MF_R(0.0);
-    /* uq = lw / L and ut = (L - lw) / L add up to 1; the smaller one is
-     * computed from its own end (q or t), the other as its complement */
-    uq = q * mf__log1p_over_x(q * p->E) / p->RK;
-    if (uq < MF_R(0.5)) ut = MF_R(1.0) - uq;
-    else { ut = t * mf__log1p_over_x(t * p->EM) / p->RMK; uq = MF_R(1.0) - ut; }
+    /* uq = lw / L and ut = (L - lw) / L add up to 1. Each is computed from
+     * its own end (q or t), starting from the smaller mass, which carries the
+     * precision (the other is 1 minus it); the other end takes over when its
+     * u is the smaller one and its mass keeps log1p away from -1 (in float,
+     * t = 1 - 6e-9 rounds to 1 and t EM to -1 at gamma 4, alpha 0.0015). */
+    if (q <= t) {
+        uq = q * mf__log1p_over_x(q * p->E) / p->RK;
+        ut = MF_R(1.0) - uq;
+        if (uq > MF_R(0.5) && t * p->EM > MF_R(-0.5)) { ut = t * mf__log1p_over_x(t * p->EM) / p->RMK; uq = MF_R(1.0) - ut; }
+    } else {
+        ut = t * mf__log1p_over_x(t * p->EM) / p->RMK;
+        uq = MF_R(1.0) - ut;
+        if (ut > MF_R(0.5) && q * p->E > MF_R(-0.5)) { uq = q * mf__log1p_over_x(q * p->E) / p->RK; ut = MF_R(1.0) - uq; }
+    }
     lw = L * uq; llw = L * ut;
     c2 = uq / mf__x_over_expm1(lw);            /* cos^2 r(L)^-1 */
     s2 = MF_EXP(lw) * ut / mf__x_over_expm1(llw);
