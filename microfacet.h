@@ -3127,6 +3127,9 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
     phi0 = c >= MF_R(1.0) ? MF_PI : MF_ACOS(mf_max(-c, MF_R(-1.0)));
     total = c * phi0 + MF_SIN(phi0);
     if (c > MF_R(1e6)) return sgn * u * MF_PI;   /* uniform */
+    /* keep off the edge phi0, where the density is 0 (u = 0 would land on it):
+     * the CDF mass moved is 4 eps */
+    if (c < MF_R(1.0)) u = mf_min(u, MF_R(1.0) - MF_R(4.0) * MF_EPS);
     lo = MF_R(0.0); hi = phi0; phi = u * phi0;
     for (i = 0; i < 60; ++i)
         if (mf__newton_step(&phi, c * phi + MF_SIN(phi) - u * total, c + MF_COS(phi), &lo, &hi, MF_R(4.0) * MF_EPS))
@@ -3235,7 +3238,9 @@ MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_
     const mf_real k = MF_R(0.28209479177387814);   /* 1 / (2 sqrt(pi)) */
     mf_real u = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), w = tv / (MF_R(0.5) + tv);
     mf_real mu = tv > MF_R(1.0) / MF_R(12.0) ? MF_R(1.0) / tv : MF_R(12.0), total = MF_R(1.0), top = MF_R(0.0);
-    mf_real lo = MF_R(-12.0), hi = mu, x, target;
+    /* lo: x^2 + y^2 stays below mf_beckmann_D's cut of 80 for every u2 (|y| <=
+     * 5.9), so u1 = 0 gives a normal of positive density; the mass cut is 1e-20 */
+    mf_real lo = MF_R(-6.5), hi = mu, x, target;
     int i;
     *sy = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
     if (!(tv > MF_EPS) && MF_FABS(u - MF_R(0.5)) < MF_R(0.4999)) {   /* x(tv) = x(0) + O(tv) */
@@ -3960,7 +3965,9 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
         }
     }
     cps = MF_COS(psi); sps = MF_SIN(psi);
-    return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(0.0))));
+    /* z >= 8 eps: theta = pi/2 rounds to cos < 0 in float (u1 = 1 - 2^-24),
+     * and atan2 must give the D lookup an angle below the last node */
+    return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(8.0) * MF_EPS)));
 }
 /* The NDF-CDF inversion of an isotropic kind sampled numerically (GTR with
  * its alpha; Student-t with unit roughness, stretched by the caller): t is the
@@ -4091,8 +4098,11 @@ MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv
         /* phi | theta: max(0, cv cos(theta) + sv sin(theta) cos(phi)) -> c = 1/(tv tan) */
         cphi = tan2 > MF_R(0.0) ? MF_R(1.0) / (v.tv * MF_SQRT(tan2)) : MF_R(1e30);
     }
-    if (!(tan2 < MF_R(1e30))) { ct = MF_R(0.0); st = MF_R(1.0); }
-    else { c2 = MF_R(1.0) / (MF_R(1.0) + tan2); ct = MF_SQRT(c2); st = MF_SQRT(tan2) * ct; }
+    /* the heaviest tails put visible mass beyond tan = 1e15 (Student-t gamma
+     * 1.55: ~10%): those normals keep tan = 1e15, so none is horizontal (z = 0,
+     * density 0); every reflection about them points below the horizon anyway */
+    tan2 = mf_min(tan2, MF_R(1e30));
+    c2 = MF_R(1.0) / (MF_R(1.0) + tan2); ct = MF_SQRT(c2); st = MF_SQRT(tan2) * ct;
     phi = mf__sample_phi_cos(cphi, u2);
     return mf_vec3_make(st * MF_COS(phi), st * MF_SIN(phi), ct);
 }
