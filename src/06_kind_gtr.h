@@ -255,9 +255,12 @@ MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q)
 /* D-cos mass beyond the polar angle whose tan^2 is tan2 (inverse of the above). */
 MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
 {
-    mf_real a2m1 = d->ax * d->ax - MF_R(1.0), x = MF_R(1.0) / (MF_R(1.0) + tan2);
-    mf_real L = d->p.gtr.L, k = MF_R(1.0) - d->p.gtr.gamma;
-    mf_real lwL = x * mf__log1p_over_x(a2m1 * x) / mf__log1p_over_x(a2m1);  /* log w / L */
+    mf_real a2 = d->ax * d->ax, a2m1 = a2 - MF_R(1.0), x = MF_R(1.0) / (MF_R(1.0) + tan2);
+    mf_real L = d->p.gtr.L, k = MF_R(1.0) - d->p.gtr.gamma, lwL;
+    /* log w / L, w = (tan^2 + a^2) / (1 + tan^2); the log1p form (exact at
+     * alpha -> 1) would take log1p(a^2 - 1) = log1p(-1) in float at alpha 1e-4 */
+    if (a2 < MF_R(0.25)) lwL = (MF_LOG(tan2 + a2) - MF_LOG1P(tan2)) / L;
+    else lwL = x * mf__log1p_over_x(a2m1 * x) / mf__log1p_over_x(a2m1);
     return lwL * mf__x_over_expm1(k * L) / mf__x_over_expm1(k * L * lwL);
 }
 
