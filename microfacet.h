@@ -1226,7 +1226,7 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     a = mf__clamp_alpha(alpha);
     if (a > MF_R(1.0)) a = MF_R(1.0);
     /* the bits: under -ffast-math the comparisons let NaN through, and the
-     * spline below indexes by gamma */
+     * Lambda rule (mf__gtr_mix_init) indexes the closed forms by gamma */
     if (!mf__finite_bits(gamma)) gamma = MF_R(0.0);
     gamma = gamma > MF_R(0.0) ? (gamma < MF_R(4.0) ? gamma : MF_R(4.0)) : MF_R(0.0);
     d = mf__ndf_init(MF_NDF_GTR, a, a);
@@ -1290,7 +1290,10 @@ MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1,
 /* Student's t-distribution of slopes (Ribardiere et al. 2017), anisotropic:
  * P22 = (1/(pi ax ay)) (1 + r^2/(gamma-1))^-gamma, r^2 = x^2/ax^2 + y^2/ay^2;
  * gamma = 2 is GGX, gamma -> infinity Beckmann. Exact Lambda through the
- * incomplete beta function; NDF sampling by the closed-form inverse CDF;
+ * incomplete beta function (measured against an independent 1D integral,
+ * gamma 1.55 to 1000, alpha 1e-4 to 1, to 89.9 deg: 1.4e-10 relative in
+ * double; in float the head - tail difference cancels: 4.4e-3 relative where
+ * Lambda > 1e-4, 4e-4 on 1 + Lambda); NDF sampling by the closed-form inverse CDF;
  * visible normals by the exact numerical inversion of 07_numeric_vndf.h.
  * Everything but the constructor is cold. */
 /* Student's t-distribution of slopes (STD), anisotropic. gamma in
@@ -1588,8 +1591,10 @@ MF_INLINE mf_mat2 mf_jacobian_2d(mf_map2_fn map, void *ctx, mf_real u, mf_real v
  *             and Walter et al. 2007's rational approximation (thesis C.2), named apart.
  *   GGX:      Lambda = (sqrt(1 + 1/a^2) - 1)/2  (thesis C.4)
  *   GTR:      Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) rewritten in
- *             tan(theta) without cancellation, natural cubic spline in gamma between
- *             (of log Lambda, not of S as in the thesis: see mf_lambda).
+ *             tan(theta) without cancellation; between them an exact mixture of
+ *             the GGX (gamma < 2) or gamma-4 (gamma > 2) Lambdas integrated by
+ *             a Gauss-Jacobi rule built at construction (see mf__gtr_lambda):
+ *             measured within 2e-6 relative of the true Lambda in double.
  *   Student-t: exact, from the marginal slope density P2(x) = K (1 + x^2/(g-1))^(1/2-g):
  *             Lambda = K (g-1)/((2g-3) mu) (1 + mu^2/(g-1))^(3/2-g) - Q(mu),
  *             Q the upper tail of P2 = I_w(g-1, 1/2)/2, w = (g-1)/(g-1+mu^2)
@@ -3324,9 +3329,15 @@ MF_INLINE mf_real mf__gtr_lambda4(mf_real a2, mf_real t2)
  * components are analytic in the strip |Im y| < pi: mf__gtr_mix_init builds
  * the Gauss-Jacobi rule of those exponents on [log a^2, 0], its weights times
  * that factor, normalized. Integer gamma: the closed forms C.7-C.11.
- * Measured against an independent quadrature of the masking integral
- * (tests/test_ndf.c) over alpha in [1e-4, 1], gamma in [0, 4], theta <= 89.9
- * deg: see the bound printed there (double). tan^2 is capped at 1e16
+ * 16 nodes for gamma < 2, 24 for gamma > 2. Measured against an independent
+ * 1D integral of the slope density (tests/test_ndf.c, alpha 1e-4 and 1e-3..1,
+ * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 2.0e-6
+ * in double (test bound 1e-5); float 6.8e-6 where Lambda > 1e-4 and 8.1e-7
+ * on 1 + Lambda. Cost (make bench, float): 12x GGX's Lambda for gamma < 2,
+ * 35x for gamma in (2, 4) (the gamma-4 components are dearer); building the
+ * rule makes mf_gtr at non-integer gamma cost 5-15 us (Golub-Welsch; integer
+ * gamma costs nothing), and the rule makes mf_ndf 544 bytes in double (192
+ * before), 288 in float (100). tan^2 is capped at 1e16
  * (Lambda ~ 1e8, G1 ~ 1e-8) so float never overflows. */
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
 {
