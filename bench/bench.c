@@ -411,6 +411,9 @@ static double b_sample_D(const mf_ndf *d) { LOOP(mf_sample_D(d, g_u1[i], g_u2[i]
 static double b_vndf(const mf_ndf *d) { LOOP(mf_sample_visible(d, g_wo[i], g_u1[i], g_u2[i]).z); }
 static double b_brdf(const mf_ndf *d) { LOOP(mf_brdf(d, g_wo[i], g_wi[i])); }
 static double b_brdf_pdf(const mf_ndf *d) { LOOP(mf_brdf_pdf(d, g_wo[i], g_wi[i])); }
+/* construction, per call: GTR at non-integer gamma builds its Lambda rule */
+static double b_make_ggx(const mf_ndf *d) { (void)d; LOOP(mf_ggx(MF_R(0.01) + g_u1[i], MF_R(0.01) + g_u1[i]).ax); }
+static double b_make_gtr(const mf_ndf *d) { (void)d; LOOP(mf_gtr(MF_R(0.01) + g_u1[i], MF_R(0.01) + MF_R(3.9) * g_u2[i]).p.gtr.qw[0]); }
 static double b_brdf_sample(const mf_ndf *d)
 {
     double s = 0.0;
@@ -527,6 +530,37 @@ static void bench_beckmann_vndf(void)
     }
 }
 
+/* GTR and Student-t against isotropic GGX (alpha 0.3) in the same run: the
+ * bench inputs (views to 1.5 rad); ./build/bench gtr_student runs only this */
+static void bench_gtr_student(void)
+{
+    int k;
+    {
+        struct { const char *name; mf_ndf d; } hs[6];
+        mf_ndf giso = mf_ggx(MF_R(0.3), MF_R(0.3));
+        double gl, gd, gs, gv, mg, mt;
+        hs[0].name = "gtr_a0.02_g1.5"; hs[0].d = mf_gtr(MF_R(0.02), MF_R(1.5));
+        hs[1].name = "gtr_a0.3_g0.5"; hs[1].d = mf_gtr(MF_R(0.3), MF_R(0.5));
+        hs[2].name = "gtr_a0.3_g2.5"; hs[2].d = mf_gtr(MF_R(0.3), MF_R(2.5));
+        hs[3].name = "gtr_a0.3_g3"; hs[3].d = mf_gtr(MF_R(0.3), MF_R(3.0));
+        hs[4].name = "student_t_a0.3_g1.6"; hs[4].d = mf_student_t(MF_R(0.3), MF_R(0.3), MF_R(1.6));
+        hs[5].name = "student_t_a0.3_g3"; hs[5].d = mf_student_t(MF_R(0.3), MF_R(0.3), MF_R(3.0));
+        gd = run(b_D, &giso); gl = run(b_lambda, &giso); gs = run(b_sample_D, &giso); gv = run(b_vndf, &giso);
+        printf("bench ggx_iso_D %.2f\nbench ggx_iso_lambda %.2f\nbench ggx_iso_sample_D %.2f\nbench ggx_iso_sample_visible %.2f\n", gd, gl, gs, gv);
+        for (k = 0; k < 6; ++k) {
+            const mf_ndf *d = &hs[k].d;
+            double td = run(b_D, d), tl = run(b_lambda, d), ts = run(b_sample_D, d), tv = run(b_vndf, d);
+            printf("bench %s_D %.2f ratio_to_ggx=%.2f\n", hs[k].name, td, td / gd);
+            printf("bench %s_lambda %.2f ratio_to_ggx=%.2f\n", hs[k].name, tl, tl / gl);
+            printf("bench %s_sample_D %.2f ratio_to_ggx=%.2f\n", hs[k].name, ts, ts / gs);
+            printf("bench %s_sample_visible %.2f ratio_to_ggx=%.2f\n", hs[k].name, tv, tv / gv);
+        }
+        run_pair(b_make_ggx, b_make_gtr, &giso, &mg, &mt);
+        printf("bench ggx_construct %.2f\nbench gtr_construct_noninteger_gamma %.2f ratio_to_ggx=%.2f\n", mg, mt, mt / mg);
+        printf("# sizeof(mf_ndf) = %d bytes\n", (int)sizeof(mf_ndf));
+    }
+}
+
 int main(int argc, char **argv)
 {
     struct { const char *name; mf_ndf d; } ks[5];
@@ -559,6 +593,10 @@ int main(int argc, char **argv)
            "(see Makefile: -O2)",
 #endif
            sizeof(mf_real) == sizeof(double) ? "double" : "float", N, REPS);
+    if (argc > 1 && !strcmp(argv[1], "gtr_student")) {   /* one section only */
+        bench_gtr_student();
+        return 0;
+    }
     if (argc > 1 && !strcmp(argv[1], "beckmann_vndf")) {   /* one section only */
         bench_beckmann_vndf();
         return 0;
@@ -600,6 +638,7 @@ int main(int argc, char **argv)
         printf("bench %s_brdf_pdf %.2f\n", ks[k].name, run(b_brdf_pdf, d));
         printf("bench %s_brdf_sample_and_weight %.2f\n", ks[k].name, run(b_brdf_sample, d));
     }
+    bench_gtr_student();
     /* linearly transformed microsurfaces: transformed vs plain, in pairs */
     for (k = 0; k < 5; ++k) {
         const mf_ndf *d = &ks[k].d;

@@ -134,6 +134,9 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
     phi0 = c >= MF_R(1.0) ? MF_PI : MF_ACOS(mf_max(-c, MF_R(-1.0)));
     total = c * phi0 + MF_SIN(phi0);
     if (c > MF_R(1e6)) return sgn * u * MF_PI;   /* uniform */
+    /* keep off the edge phi0, where the density is 0 (u = 0 would land on it):
+     * the CDF mass moved is 4 eps */
+    if (c < MF_R(1.0)) u = mf_min(u, MF_R(1.0) - MF_R(4.0) * MF_EPS);
     lo = MF_R(0.0); hi = phi0; phi = u * phi0;
     for (i = 0; i < 60; ++i)
         if (mf__newton_step(&phi, c * phi + MF_SIN(phi) - u * total, c + MF_COS(phi), &lo, &hi, MF_R(4.0) * MF_EPS))

@@ -93,7 +93,9 @@ MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_
     const mf_real k = MF_R(0.28209479177387814);   /* 1 / (2 sqrt(pi)) */
     mf_real u = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), w = tv / (MF_R(0.5) + tv);
     mf_real mu = tv > MF_R(1.0) / MF_R(12.0) ? MF_R(1.0) / tv : MF_R(12.0), total = MF_R(1.0), top = MF_R(0.0);
-    mf_real lo = MF_R(-12.0), hi = mu, x, target;
+    /* lo: x^2 + y^2 stays below mf_beckmann_D's cut of 80 for every u2 (|y| <=
+     * 5.9), so u1 = 0 gives a normal of positive density; the mass cut is 1e-20 */
+    mf_real lo = MF_R(-6.5), hi = mu, x, target;
     int i;
     *sy = mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
     if (!(tv > MF_EPS) && MF_FABS(u - MF_R(0.5)) < MF_R(0.4999)) {   /* x(tv) = x(0) + O(tv) */

@@ -4,7 +4,10 @@
 /* Student's t-distribution of slopes (Ribardiere et al. 2017), anisotropic:
  * P22 = (1/(pi ax ay)) (1 + r^2/(gamma-1))^-gamma, r^2 = x^2/ax^2 + y^2/ay^2;
  * gamma = 2 is GGX, gamma -> infinity Beckmann. Exact Lambda through the
- * incomplete beta function; NDF sampling by the closed-form inverse CDF;
+ * incomplete beta function (measured against an independent 1D integral,
+ * gamma 1.55 to 1000, alpha 1e-4 to 1, to 89.9 deg: 1.4e-10 relative in
+ * double; in float the head - tail difference cancels: 4.4e-3 relative where
+ * Lambda > 1e-4, 4e-4 on 1 + Lambda); NDF sampling by the closed-form inverse CDF;
  * visible normals by the exact numerical inversion of 07_numeric_vndf.h.
  * Everything but the constructor is cold. */
 /* @decl */

@@ -456,7 +456,9 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
         }
     }
     cps = MF_COS(psi); sps = MF_SIN(psi);
-    return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(0.0))));
+    /* z >= 8 eps: theta = pi/2 rounds to cos < 0 in float (u1 = 1 - 2^-24),
+     * and atan2 must give the D lookup an angle below the last node */
+    return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(8.0) * MF_EPS)));
 }
 /* @impl */
 /* ---- Tabulated (piecewise-linear) distributions ---- */

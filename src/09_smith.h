@@ -12,8 +12,10 @@
  *             and Walter et al. 2007's rational approximation (thesis C.2), named apart.
  *   GGX:      Lambda = (sqrt(1 + 1/a^2) - 1)/2  (thesis C.4)
  *   GTR:      Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) rewritten in
- *             tan(theta) without cancellation, natural cubic spline in gamma between
- *             (of log Lambda, not of S as in the thesis: see mf_lambda).
+ *             tan(theta) without cancellation; between them an exact mixture of
+ *             the GGX (gamma < 2) or gamma-4 (gamma > 2) Lambdas integrated by
+ *             a Gauss-Jacobi rule built at construction (see mf__gtr_lambda):
+ *             measured within 2e-6 relative of the true Lambda in double.
  *   Student-t: exact, from the marginal slope density P2(x) = K (1 + x^2/(g-1))^(1/2-g):
  *             Lambda = K (g-1)/((2g-3) mu) (1 + mu^2/(g-1))^(3/2-g) - Q(mu),
  *             Q the upper tail of P2 = I_w(g-1, 1/2)/2, w = (g-1)/(g-1+mu^2)
