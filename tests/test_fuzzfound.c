@@ -361,6 +361,17 @@ static mf_result b_ltc_table(void *c)
     return r;
 }
 
+static mf_result b_albedo_table(void *c)
+{
+    mf_albedo_table t;
+    mf_ndf d = mf_gtr(MF_R(0.4), MF_R(1.5));
+    mf_result r;
+    (void)c;
+    r = mf_albedo_table_build(&t, &d, 4, 2, 1);
+    if (!r) mf_albedo_table_release(&t);
+    return r;
+}
+
 /* k = 1, 2, ...: the k-th allocation fails. Every run must return an error
  * (MF_ERROR_OUT_OF_MEMORY) and leave no block; the run with no failure must
  * succeed and leave no block once released. Returns the number of calls. */
@@ -406,6 +417,7 @@ static void allocator_and_sizes(void)
     mft_fail_sweep("mf_microsurface_integrate", b_integrate, NULL);
     mft_fail_sweep("mf_gonio_init + mf_gonio_measure", b_gonio, NULL);
     mft_fail_sweep("mf_ltc_table_build", b_ltc_table, NULL);
+    mft_fail_sweep("mf_albedo_table_build", b_albedo_table, NULL);
     free(saved);
     /* sizes: out of range -> invalid argument; in range but too large for
      * the allocator (it refuses every call here) -> out of memory, without
