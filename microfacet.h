@@ -482,6 +482,13 @@ typedef float mf_real;
 #define mf_albedo_table_eval MF__SYM(mf_albedo_table_eval)
 #define mf_albedo_table_average MF__SYM(mf_albedo_table_average)
 #define mf_brdf_ms_table MF__SYM(mf_brdf_ms_table)
+#define mf_dielectric_ms_build MF__SYM(mf_dielectric_ms_build)
+#define mf_dielectric_ms_release MF__SYM(mf_dielectric_ms_release)
+#define mf_dielectric_albedo MF__SYM(mf_dielectric_albedo)
+#define mf_dielectric_albedo_integrate MF__SYM(mf_dielectric_albedo_integrate)
+#define mf_dielectric_bsdf_ms MF__SYM(mf_dielectric_bsdf_ms)
+#define mf_dielectric_ms_sample MF__SYM(mf_dielectric_ms_sample)
+#define mf_dielectric_ms_pdf MF__SYM(mf_dielectric_ms_pdf)
 
 /* Result codes of builders. */
 typedef enum mf_result {
@@ -3209,6 +3216,48 @@ MFDEF void mf_albedo_table_release(mf_albedo_table *t);
 MFDEF mf_real mf_albedo_table_eval(const mf_albedo_table *t, mf_vec3 wo);
 MFDEF mf_real mf_albedo_table_average(const mf_albedo_table *t);
 MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi);
+
+/* Rough dielectrics (Kulla & Conty 2017, section 2.2), for one mf_ndf and
+ * one eta (index below over index above, as mf_dielectric_bsdf). E1(mu) and
+ * E2(mu) are the albedos of reflection plus transmission seen from above
+ * (entering, relative index eta) and from below (exiting, 1 / eta), in
+ * importance (flux) transport, i.e. without the 1 / e^2 factor of
+ * transmitted radiance: that is the transport in which a non-absorbing
+ * interface must conserve, E + compensation = 1 from either side. The
+ * compensation is split between reflection and transmission so that it is
+ * reciprocal (generalized: f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2 in
+ * radiance form) and conserves on both sides: from above a share
+ * x = 1 - F_avg(eta) (mf_fresnel_dielectric_average) is transmitted, from
+ * below the share y = x (1 - E1_avg) / (eta^2 (1 - E2_avg)), which
+ * reciprocity dictates; the lobes are
+ *   reflection above    (1 - x) (1 - E1(mu_o)) (1 - E1(mu_i)) / (pi (1 - E1_avg))
+ *   reflection below    (1 - y) (1 - E2(mu_o)) (1 - E2(mu_i)) / (pi (1 - E2_avg))
+ *   transmission down   x (1 - E1(mu_o)) (1 - E2(mu_i)) / (pi (1 - E2_avg))
+ *   transmission up     y (1 - E2(mu_o)) (1 - E1(mu_i)) / (pi (1 - E1_avg))
+ * (importance form; mf_dielectric_bsdf_ms returns the radiance form, the
+ * transmitted lobes divided by e^2 = (eta_i / eta_o)^2 like
+ * mf_dielectric_bsdf). x is clamped to keep y <= 1. E1 and E2 are
+ * tabulated at n_mu nodes mu = x^2 as mf_albedo_table, by quadrature over
+ * the visible normals of the side of wo (panels as mf_albedo_integrate).
+ * There are no built-in dielectric tables: build one per material. */
+typedef struct mf_dielectric_ms_table {
+    int n_mu;
+    mf_real eta;
+    mf_real *E;              /* E1 at [i], E2 at [n_mu + i] */
+    mf_real E1_avg, E2_avg;  /* hemispherical averages of the interpolants */
+    mf_real x, y;            /* shares transmitted from above and from below */
+} mf_dielectric_ms_table;
+MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels);
+MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t);
+/* E(wo) of the side of wo (importance transport, reflection + transmission) */
+MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo);
+/* the same by quadrature, for any mf_ndf (0 on bad input) */
+MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels);
+/* the compensation lobe (radiance form), its sampling (u3 picks the side:
+ * transmission with the share of wo's side; cosine on that side) and pdf */
+MFDEF mf_real mf_dielectric_bsdf_ms(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
+MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3);
+MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
 
 
 #ifdef __cplusplus
@@ -10122,6 +10171,145 @@ MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     if (!t || !t->E || !(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     return mf__ms_lobe(mf_albedo_table_eval(t, wo), mf_albedo_table_eval(t, wi), t->E_avg);
+}
+
+/* ---- rough dielectrics */
+MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels)
+{
+    double sum = 0.0, h;
+    mf_real lo;
+    int p1, p2, i, j;
+    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(wo.x == wo.x) || !(wo.y == wo.y) || !(MF_FABS(wo.z) <= MF_R(1.0))) return MF_R(0.0);
+    if (!(wo.z != MF_R(0.0))) return MF_R(0.0);
+    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; }   /* as mf_dielectric_sample */
+    lo = mf_lambda(d, wo);
+    h = 1.0 / (double)panels;
+    for (p1 = 0; p1 < panels; ++p1)
+        for (i = 0; i < 8; ++i) {
+            mf_real u1 = (mf_real)(h * ((double)p1 + 0.5 + 0.5 * (double)mf__gl_xi(i)));
+            for (p2 = 0; p2 < panels; ++p2)
+                for (j = 0; j < 8; ++j) {
+                    mf_real u2 = (mf_real)(h * ((double)p2 + 0.5 + 0.5 * (double)mf__gl_xi(j)));
+                    mf_vec3 m = mf_sample_visible(d, wo, u1, u2), wr, wt;
+                    mf_real F, v = MF_R(0.0);
+                    if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) continue;
+                    F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
+                    wr = mf_reflect(wo, m);
+                    if (wr.z > MF_R(0.0)) v += F * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wr);
+                    if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0))
+                        v += (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
+                    if (v == v && v < MF_BIG) sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
+                }
+        }
+    sum *= h * h;
+    return sum > 0.0 ? (sum < 1.0 ? (mf_real)sum : MF_R(1.0)) : MF_R(0.0);
+}
+
+MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
+{
+    if (!t) return;
+    if (t->E) MF_FREE(t->E);
+    t->E = 0;
+    t->n_mu = 0;
+    t->E1_avg = t->E2_avg = t->x = t->y = t->eta = MF_R(0.0);
+}
+
+MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels)
+{
+    int i, s;
+    double *row, avg[2], x, y;
+    if (t) { t->E = 0; t->n_mu = 0; t->E1_avg = t->E2_avg = t->x = t->y = t->eta = MF_R(0.0); }
+    if (!t || !d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || n_mu < 2 || n_mu > 1024 ||
+        panels < 1 || panels > 64 || !(eta > MF_R(1e-3)) || !(eta < MF_R(1e3)))
+        return MF_ERROR_INVALID_ARGUMENT;
+    t->E = (mf_real *)MF_MALLOC(sizeof(mf_real) * 2 * (size_t)n_mu);
+    if (!t->E) return MF_ERROR_OUT_OF_MEMORY;
+    row = (double *)MF_MALLOC(sizeof(double) * (size_t)n_mu);
+    if (!row) { MF_FREE(t->E); t->E = 0; return MF_ERROR_OUT_OF_MEMORY; }
+    for (s = 0; s < 2; ++s) {
+        for (i = 0; i < n_mu; ++i) {
+            mf_real xx = (mf_real)i / (mf_real)(n_mu - 1), mu = mf_max(xx * xx, MF_R(1e-4));
+            mf_real sn = MF_SQRT(MF_R(1.0) - mu * mu);
+            mf_real e = mf_dielectric_albedo_integrate(d, mf_vec3_make(sn, MF_R(0.0), s ? -mu : mu), eta, panels);
+            if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_dielectric_ms_release(t); return MF_ERROR_INVALID_DATA; }
+            t->E[(size_t)s * (size_t)n_mu + (size_t)i] = e;
+            row[i] = (double)e;
+        }
+        avg[s] = mf__energy_avg_1d(row, n_mu);
+    }
+    MF_FREE(row);
+    /* shares: x from above, y from below = x (1 - E1avg) / (eta^2 (1 - E2avg)) */
+    /* from the averages as stored, so that reciprocity holds in mf_real */
+    avg[0] = (double)(mf_real)avg[0];
+    avg[1] = (double)(mf_real)avg[1];
+    x = 1.0 - (double)mf_fresnel_dielectric_average(eta);
+    y = 1.0 - avg[1] > 1e-9 ? x * (1.0 - avg[0]) / ((double)eta * (double)eta * (1.0 - avg[1])) : 0.0;
+    if (y > 1.0) { x /= y; y = 1.0; }
+    t->n_mu = n_mu;
+    t->eta = eta;
+    t->E1_avg = (mf_real)avg[0];
+    t->E2_avg = (mf_real)avg[1];
+    t->x = (mf_real)x;
+    t->y = (mf_real)y;
+    return MF_SUCCESS;
+}
+
+MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
+{
+    mf_real len, x, fx;
+    const mf_real *E;
+    int i;
+    if (!t || !t->E || t->n_mu < 2 || !(wo.z != MF_R(0.0))) return MF_R(0.0);
+    len = MF_SQRT(wo.x * wo.x + wo.y * wo.y + wo.z * wo.z);
+    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return MF_R(0.0);
+    E = t->E + (wo.z < MF_R(0.0) ? t->n_mu : 0);
+    x = mf_clamp(MF_SQRT(mf_min(MF_FABS(wo.z) / len, MF_R(1.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(t->n_mu - 1);
+    i = (int)x; if (i > t->n_mu - 2) i = t->n_mu - 2;
+    fx = x - (mf_real)i;
+    return E[i] * (MF_R(1.0) - fx) + E[i + 1] * fx;
+}
+
+/* importance-form lobe value (1 - E(wo)) (1 - E(wi)) share / (pi (1 - E_avg of wi's side)) */
+MF_INLINE mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+{
+    int below_o = wo.z < MF_R(0.0), below_i = wi.z < MF_R(0.0);
+    mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);
+    mf_real ea = below_i ? t->E2_avg : t->E1_avg, den = MF_PI * (MF_R(1.0) - ea);
+    if (!(den > MF_R(1e-6))) return MF_R(0.0);
+    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_albedo(t, wi)) / den,
+                    MF_R(0.0), MF_BIG);
+}
+
+MFDEF mf_real mf_dielectric_bsdf_ms(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_real f, e;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
+    f = mf__dielectric_ms_imp(t, wo, wi);
+    if (wo.z * wi.z > MF_R(0.0)) return f;
+    e = wo.z > MF_R(0.0) ? t->eta : MF_R(1.0) / t->eta;   /* eta_i / eta_o */
+    return f / (e * e);
+}
+
+MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3)
+{
+    mf_vec3 w;
+    mf_real share;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    w = mf_brdf_ms_sample(0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), u1, u2);
+    share = wo.z < MF_R(0.0) ? t->y : t->x;   /* transmitted share */
+    if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
+    if (wo.z < MF_R(0.0)) w.z = -w.z;
+    return w;
+}
+
+MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_real share;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
+    share = wo.z < MF_R(0.0) ? t->y : t->x;
+    if (wo.z * wi.z < MF_R(0.0)) return share * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+    return (MF_R(1.0) - share) * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
 }
 
 #ifdef __cplusplus

@@ -326,6 +326,177 @@ static void robust(void)
     CHECKV(bad == 0, "energy compensation functions: finite, E in [0, 1], f_ms and pdf >= 0, unit or zero samples, on extreme input");
 }
 
+/* int f_ms |wi.z| dwi over both hemispheres, the transmitted part times e^2
+ * (importance transport), GL in x = sqrt(|mu|), 16 azimuths */
+static double ref_diel_ms(const mf_dielectric_ms_table *t, mf_vec3 wo)
+{
+    double gx[8], gw[8], sum = 0.0;
+    int p, i, q, side;
+    mft_gl(8, gx, gw);
+    for (side = 0; side < 2; ++side)
+        for (p = 0; p < 32; ++p)
+            for (i = 0; i < 8; ++i) {
+                double x = ((double)p + gx[i]) / 32.0, mu = x * x, s = sqrt(1.0 - mu * mu);
+                for (q = 0; q < 16; ++q) {
+                    double ph = 2.0 * 3.14159265358979324 * (q + 0.5) / 16.0, f, e;
+                    mf_vec3 wi = mf_vec3_make((mf_real)(s * cos(ph)), (mf_real)(s * sin(ph)), (mf_real)(side ? -mu : mu));
+                    f = (double)mf_dielectric_bsdf_ms(t, wo, wi);
+                    if ((wo.z > 0) != (wi.z > 0)) { e = wo.z > 0 ? (double)t->eta : 1.0 / (double)t->eta; f *= e * e; }
+                    sum += gw[i] / 32.0 * 2.0 * x * (2.0 * 3.14159265358979324 / 16.0) * f * mu;
+                }
+            }
+    return sum;
+}
+
+/* dielectric white furnace in importance transport: MC albedo of the single-
+ * scattering BSDF (mf_dielectric_sample, weight times e^2) plus the
+ * compensation lobe's integral, both sides, GGX and Beckmann */
+static void dielectric(void)
+{
+    static const double alphas[] = { 0.01, 0.03, 0.1, 0.2, 0.4, 0.6, 0.8, 1.0 };
+    static const double mus[] = { 0.02, 0.1, 0.3, 0.6, 1.0 };
+    const mf_real eta = MF_R(1.5);
+    const int n = 100000;
+    int k, ia, im, side, i;
+    char msg[400];
+    for (k = 0; k < 2; ++k) {
+        double worst_f = 0.0, raw_f = 0.0, worst_e = 0.0, wa = 0, wm = 0, ws = 0, sig_max = 0.0, loss = 0.0, la = 0, lm = 0, ls = 0;
+        int bad_recip = 0;
+        for (ia = 0; ia < (int)(sizeof alphas / sizeof alphas[0]); ++ia) {
+            mf_ndf d = k ? mf_beckmann((mf_real)alphas[ia], (mf_real)alphas[ia]) : mf_ggx((mf_real)alphas[ia], (mf_real)alphas[ia]);
+            mf_dielectric_ms_table t;
+            mft_rng r;
+            if (mf_dielectric_ms_build(&t, &d, eta, 32, 8) != MF_SUCCESS) { CHECKV(0, "mf_dielectric_ms_build succeeds"); continue; }
+            mft_seed(&r, 99 + ia);
+            for (im = 0; im < 5; ++im)
+                for (side = 0; side < 2; ++side) {
+                    mf_vec3 wo = view(mus[im], 0.3);
+                    double s1 = 0.0, s2 = 0.0, e, sig, tot;
+                    if (side) wo.z = -wo.z;
+                    for (i = 0; i < n; ++i) {
+                        mf_vec3 wi = mf_dielectric_sample(&d, wo, eta, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                        double w;
+                        if (wi.x == 0 && wi.y == 0 && wi.z == 0) continue;
+                        w = (double)mf_dielectric_sample_weight(&d, wo, wi, eta);
+                        if ((wo.z > 0) != (wi.z > 0)) { double ee = wo.z > 0 ? 1.5 : 1.0 / 1.5; w *= ee * ee; }
+                        s1 += w; s2 += w * w;
+                    }
+                    e = s1 / n;
+                    sig = sqrt((s2 / n - e * e) / n);
+                    if (sig > sig_max) sig_max = sig;
+                    tot = e + ref_diel_ms(&t, wo);
+                    if (fabs(tot - 1.0) - 4.0 * sig > worst_f) worst_f = fabs(tot - 1.0) - 4.0 * sig;
+                    if (fabs(tot - 1.0) > raw_f) { raw_f = fabs(tot - 1.0); wa = alphas[ia]; wm = mus[im]; ws = side; }
+                    if (fabs(e - (double)mf_dielectric_albedo(&t, wo)) - 4.0 * sig > worst_e) worst_e = fabs(e - (double)mf_dielectric_albedo(&t, wo)) - 4.0 * sig;
+                    if (1.0 - e > loss) { loss = 1.0 - e; la = alphas[ia]; lm = mus[im]; ls = side; }
+                }
+            /* generalized reciprocity of the lobe: f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2 */
+            for (i = 0; i < 200; ++i) {
+                mf_vec3 a = view(0.05 + 0.95 * mft_u01(&r), 6.283 * mft_u01(&r)), b = view(0.05 + 0.95 * mft_u01(&r), 6.283 * mft_u01(&r));
+                double na = 1.0, nb = 1.0, f1, f2;
+                if (i & 1) { a.z = -a.z; na = 1.5; }
+                if (i & 2) { b.z = -b.z; nb = 1.5; }
+                f1 = (double)mf_dielectric_bsdf_ms(&t, a, b) / (na * na);
+                f2 = (double)mf_dielectric_bsdf_ms(&t, b, a) / (nb * nb);
+                if (fabs(f1 - f2) > MFT_TOL(1e-9, 1e-5) * (fabs(f1) + 1e-3)) ++bad_recip;
+            }
+            mf_dielectric_ms_release(&t);
+        }
+        snprintf(msg, sizeof msg, "%s dielectric eta 1.5 white furnace (importance transport), both sides: worst |1 - albedo| %.2e "
+                 "(alpha %g, mu %g, %s; MC sigma <= %.1e, %d samples; %.1e beyond 4 sigma) <= 1e-2; single scattering loses up to %.3f (alpha %g, mu %g, %s)",
+                 k ? "Beckmann" : "GGX", raw_f, wa, wm, ws ? "below" : "above", sig_max, n, worst_f, loss, la, lm, ls ? "below" : "above");
+        CHECKV(raw_f <= 1e-2, msg);
+        snprintf(msg, sizeof msg, "%s dielectric albedo table vs MC: worst |error| %.2e beyond 4 sigma <= 5e-3", k ? "Beckmann" : "GGX", worst_e);
+        CHECKV(worst_e <= 5e-3, msg);
+        snprintf(msg, sizeof msg, "%s dielectric compensation lobe: generalized reciprocity (%d of 1600 pairs off)", k ? "Beckmann" : "GGX", bad_recip);
+        CHECKV(bad_recip == 0, msg);
+    }
+    /* sampling of the lobe: 2 sides x 10 x 8 bins, from above and below */
+    {
+        static double obs[160], ex[160];
+        mf_ndf d = mf_ggx(MF_R(0.6), MF_R(0.6));
+        mf_dielectric_ms_table t;
+        mft_rng r;
+        int s0, dof, j, bad = 0;
+        double z, pint;
+        mf_dielectric_ms_build(&t, &d, MF_R(1.5), 16, 2);
+        for (s0 = 0; s0 < 2; ++s0) {
+            mf_vec3 wo = view(0.5, 0.2);
+            if (s0) wo.z = -wo.z;
+            mft_seed(&r, 5 + s0);
+            for (i = 0; i < 160; ++i) obs[i] = 0.0;
+            for (i = 0; i < 160; ++i) {
+                double share = (double)mf_dielectric_ms_pdf(&t, wo, mf_vec3_make(0, 0, i >= 80 ? -1 : 1)) * 3.14159265358979324;
+                ex[i] = 200000.0 * share / 80.0;
+            }
+            for (i = 0; i < 200000; ++i) {
+                mf_vec3 wi = mf_dielectric_ms_sample(&t, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                double ph = atan2((double)wi.y, (double)wi.x), az = fabs((double)wi.z);
+                int b0, b1;
+                if (wi.z == 0) continue;
+                if (ph < 0) ph += 2.0 * 3.14159265358979324;
+                b0 = (int)((1.0 - az * az) * 10.0); if (b0 > 9) b0 = 9; if (b0 < 0) b0 = 0;
+                b1 = (int)(ph / (2.0 * 3.14159265358979324) * 8.0); if (b1 > 7) b1 = 7;
+                obs[(wi.z < 0 ? 80 : 0) + b0 * 8 + b1] += 1.0;
+            }
+            z = mft_chi2(obs, ex, 160, &dof);
+            snprintf(msg, sizeof msg, "mf_dielectric_ms_sample from %s follows mf_dielectric_ms_pdf: chi-square z = %.2f (dof %d)", s0 ? "below" : "above", z, dof);
+            CHECKV(fabs(z) < 5.0, msg);
+            /* pdf integrates to 1 over the sphere */
+            {
+                double gx[8], gw[8];
+                int p, q, sd;
+                mft_gl(8, gx, gw);
+                pint = 0.0;
+                for (sd = 0; sd < 2; ++sd)
+                    for (p = 0; p < 8; ++p)
+                        for (j = 0; j < 8; ++j) {
+                            double mu = (p + gx[j]) / 8.0, sn = sqrt(1.0 - mu * mu);
+                            for (q = 0; q < 8; ++q) {
+                                double ph = 6.283185307179586 * (q + 0.5) / 8.0;
+                                pint += gw[j] / 8.0 * 6.283185307179586 / 8.0 *
+                                        (double)mf_dielectric_ms_pdf(&t, wo, mf_vec3_make((mf_real)(sn * cos(ph)), (mf_real)(sn * sin(ph)), (mf_real)(sd ? -mu : mu)));
+                            }
+                        }
+                if (fabs(pint - 1.0) > 1e-5) ++bad;
+            }
+        }
+        CHECKV(bad == 0, "mf_dielectric_ms_pdf integrates to 1 over the sphere from both sides");
+        mf_dielectric_ms_release(&t);
+    }
+    /* bad input, degenerate directions */
+    {
+        mf_dielectric_ms_table t;
+        mf_ndf d = mf_ggx(MF_R(0.3), MF_R(0.3));
+        const double inf = HUGE_VAL, nan = inf - inf;
+        int ok = 1, bad = 0, a, b;
+        mf_vec3 dirs[6];
+        ok &= mf_dielectric_ms_build(NULL, &d, MF_R(1.5), 8, 1) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_build(&t, &d, (mf_real)nan, 8, 1) == MF_ERROR_INVALID_ARGUMENT && t.E == NULL;
+        ok &= mf_dielectric_ms_build(&t, &d, MF_R(0.0), 8, 1) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_build(&t, &d, MF_R(1.5), 1, 1) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_build(&t, &d, MF_R(1.5), 8, 65) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_albedo(&t, view(0.5, 0.0)) == 0 && mf_dielectric_bsdf_ms(NULL, view(0.5, 0.0), view(0.5, 0.0)) == 0;
+        mf_dielectric_ms_release(NULL);
+        CHECKV(ok, "mf_dielectric_ms_build: bad arguments are MF_ERROR_INVALID_ARGUMENT, nothing allocated");
+        mf_dielectric_ms_build(&t, &d, MF_R(1.5), 8, 1);
+        dirs[0] = mf_vec3_make(0, 0, 1); dirs[1] = mf_vec3_make(1, 0, 0); dirs[2] = mf_vec3_make(0, 0, -1);
+        dirs[3] = mf_vec3_make((mf_real)nan, 0, 1); dirs[4] = mf_vec3_make(0, 0, (mf_real)inf); dirs[5] = mf_vec3_make(0, 0, 0);
+        for (a = 0; a < 6; ++a) {
+            double e = mf_dielectric_albedo(&t, dirs[a]), ei = mf_dielectric_albedo_integrate(&d, dirs[a], (mf_real)(a == 1 ? nan : 1.5), 1);
+            mf_vec3 w = mf_dielectric_ms_sample(&t, dirs[a], (mf_real)nan, MF_R(0.5), (mf_real)inf);
+            double l = (double)w.x * w.x + (double)w.y * w.y + (double)w.z * w.z;
+            if (!(e >= 0 && e <= 1) || !(ei >= 0 && ei <= 1) || !mft_finite(l) || !(l == 0.0 || fabs(l - 1.0) < 1e-4)) ++bad;
+            for (b = 0; b < 6; ++b) {
+                double f = mf_dielectric_bsdf_ms(&t, dirs[a], dirs[b]), p = mf_dielectric_ms_pdf(&t, dirs[a], dirs[b]);
+                if (!mft_finite(f) || f < 0 || !mft_finite(p) || p < 0) ++bad;
+            }
+        }
+        mf_dielectric_ms_release(&t);
+        CHECKV(bad == 0, "dielectric compensation functions: finite, E in [0, 1], f and pdf >= 0 on degenerate input");
+    }
+}
+
 void test_energy(void)
 {
     tables_and_furnace();
@@ -333,4 +504,5 @@ void test_energy(void)
     builder();
     fresnel_and_sampling();
     robust();
+    dielectric();
 }

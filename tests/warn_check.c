@@ -51,6 +51,15 @@ int main(void)
                 s += mf_albedo_table_eval(&at, wo) + mf_albedo_table_average(&at) + mf_brdf_ms_table(&at, wo, wi);
                 mf_albedo_table_release(&at);
             }
+            {
+                mf_dielectric_ms_table dt;
+                if (mf_dielectric_ms_build(&dt, d, MF_R(1.5), 4, 1) == MF_SUCCESS) {
+                    s += mf_dielectric_albedo(&dt, wo) + mf_dielectric_bsdf_ms(&dt, wo, wi) + mf_dielectric_ms_pdf(&dt, wo, wi);
+                    s += mf_dielectric_ms_sample(&dt, wo, MF_R(0.2), MF_R(0.4), MF_R(0.6)).z;
+                    mf_dielectric_ms_release(&dt);
+                }
+                s += mf_dielectric_albedo_integrate(d, wo, MF_R(1.5), 1);
+            }
         s += mf_dielectric_bsdf(d, wo, wi, MF_R(1.5)) + mf_dielectric_pdf(d, wo, wi, MF_R(1.5));
         s += mf_dielectric_sample(d, wo, MF_R(1.5), MF_R(0.2), MF_R(0.7), MF_R(0.5)).z + mf_dielectric_sample_weight(d, wo, wi, MF_R(1.5));
     }
