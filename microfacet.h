@@ -3151,7 +3151,7 @@ MFDEF mf_result mf_gonio_model(const mf_gonio *g, const mf_ndf *d, mf_vec3 wi, i
  * (transformed, GTR, Student-t, tabulated, LEADR) is integrated on each call
  * by mf_albedo_integrate: exact but slow (4096 BRDF evaluations for E, about
  * 130 times more for E_avg); build an mf_albedo_table for it once instead.
- * Rough dielectrics are not compensated here. */
+ * Rough dielectrics: mf_dielectric_ms_table below. */
 MFDEF mf_real mf_albedo(const mf_ndf *d, mf_vec3 wo);
 MFDEF mf_real mf_albedo_average(const mf_ndf *d);
 MFDEF mf_real mf_brdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi);
