@@ -10,7 +10,7 @@ BUILD   := build
 TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/test_sampling.c \
             tests/test_brdf.c tests/test_ltmd.c tests/test_ltc.c tests/test_leadr.c \
             tests/test_tabulated.c tests/test_ibm.c tests/test_microsurface.c \
-            tests/test_materials.c tests/test_dielectric.c tests/test_robust.c tests/test_float.c tests/test_tu2.c \
+            tests/test_materials.c tests/test_dielectric.c tests/test_energy.c tests/test_robust.c tests/test_float.c tests/test_tu2.c \
             tests/test_fuzzfound.c
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
@@ -32,7 +32,7 @@ endif
 
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
-        header header-check config-check package-check ltc-table tools \
+        header header-check config-check package-check ltc-table energy-table tools \
         $(foreach s,header warnings config package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
@@ -56,6 +56,13 @@ header-check:
 ltc-table: | $(BUILD)
 	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/ltc_fit.c -o $(BUILD)/ltc_fit -lm
 	./$(BUILD)/ltc_fit --module > src/14_ltc_table.h.tmp && mv src/14_ltc_table.h.tmp src/14_ltc_table.h
+	@$(MAKE) --no-print-directory header
+
+# the built-in directional-albedo tables (GGX, Beckmann), retabulated (about
+# 10 s); reproduces the shipped src/17_energy_table.h byte for byte
+energy-table: | $(BUILD)
+	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/energy_fit.c -o $(BUILD)/energy_fit -lm
+	./$(BUILD)/energy_fit > src/17_energy_table.h.tmp && mv src/17_energy_table.h.tmp src/17_energy_table.h
 	@$(MAKE) --no-print-directory header
 
 $(BUILD):

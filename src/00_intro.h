@@ -49,6 +49,10 @@
  *          footprint queries, the filtered glint BRDF, sampling and pdf
  *   == 16. Microsurface generation from any distribution and a virtual
  *          gonioreflectometer
+ *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
+ *   == 18. Energy compensation (Kulla & Conty 2017): albedo, the multiple-
+ *          scattering lobe and its sampling, Turquin scaling, table builders
+ *          for any kind, rough dielectrics of a given eta
  *
  * ADDING A DISTRIBUTION KIND
  *
@@ -191,5 +195,6 @@
  *          validation, exact IBM weights of sub-texel footprints, a sample
  *          only where its pdf is positive, mf_clamp maps NaN to the lower
  *          bound, MF_MICROSURFACE_MAX_ITERATIONS; bit-level checks that hold
- *          under -ffast-math.
+ *          under -ffast-math. Energy compensation for conductors and
+ *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
  */

@@ -187,6 +187,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_microsurface);
     MFT_RUN(test_materials);
     MFT_RUN(test_dielectric);
+    MFT_RUN(test_energy);
     MFT_RUN(test_robust);
     MFT_RUN(test_fuzzfound);
     MFT_RUN(test_float);

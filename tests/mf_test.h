@@ -91,6 +91,7 @@ void test_ibm(void);
 void test_microsurface(void);
 void test_materials(void);
 void test_dielectric(void);
+void test_energy(void);
 void test_fuzzfound(void);
 
 /* The same inline and cold-path computations, compiled in each unit that

@@ -368,6 +368,28 @@ static mf_result b_ltc_table(void *c)
     return r;
 }
 
+static mf_result b_albedo_table(void *c)
+{
+    mf_albedo_table t;
+    mf_ndf d = mf_gtr(MF_R(0.4), MF_R(1.5));
+    mf_result r;
+    (void)c;
+    r = mf_albedo_table_build(&t, &d, 4, 2, 1);
+    if (!r) mf_albedo_table_release(&t);
+    return r;
+}
+
+static mf_result b_dielectric_ms(void *c)
+{
+    mf_dielectric_ms_table t;
+    mf_ndf d = mf_beckmann(MF_R(0.4), MF_R(0.4));
+    mf_result r;
+    (void)c;
+    r = mf_dielectric_ms_build(&t, &d, MF_R(1.5), 4, 1);
+    if (!r) mf_dielectric_ms_release(&t);
+    return r;
+}
+
 /* k = 1, 2, ...: the k-th allocation fails. Every run must return an error
  * (MF_ERROR_OUT_OF_MEMORY) and leave no block; the run with no failure must
  * succeed and leave no block once released. Returns the number of calls. */
@@ -415,6 +437,8 @@ static void allocator_and_sizes(void)
     mft_fail_sweep("mf_ltc_table_build", b_ltc_table, NULL);
     mft_fail_sweep("mf_ltc_fit (distribution)", b_ltc_fit, NULL);
     mft_fail_sweep("mf_ltc_fit (BRDF callback)", b_ltc_fit, h8);
+    mft_fail_sweep("mf_albedo_table_build", b_albedo_table, NULL);
+    mft_fail_sweep("mf_dielectric_ms_build", b_dielectric_ms, NULL);
     free(saved);
     /* sizes: out of range -> invalid argument; in range but too large for
      * the allocator (it refuses every call here) -> out of memory, without

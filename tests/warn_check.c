@@ -42,6 +42,24 @@ int main(void)
         s += mf_D_visible(d, wo, wm) + wd.z + ws.z + mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi);
         s += mf_brdf_sample_weight(d, wo, wi) + mf_projected_area(d, wo) + mf_ggx_brdf_pdf_bounded(d, wo, wi);
         s += mf_ggx_sample_visible_bounded(d, wo, MF_R(0.3), MF_R(0.6)).z;
+        s += mf_albedo(d, wo) + mf_albedo_average(d) + mf_brdf_ms(d, wo, wi) + mf_ms_turquin_scale(d, wo, MF_R(0.5));
+        s += mf_albedo_integrate(d, wo, 1) + mf_ms_fresnel(MF_R(0.9), MF_R(0.6));
+        s += mf_brdf_ms_sample(d, wo, MF_R(0.3), MF_R(0.6)).z + mf_brdf_ms_pdf(d, wo, wi);
+        if (i == 2) {
+            mf_albedo_table at;
+            if (mf_albedo_table_build(&at, d, 4, 1, 1) == MF_SUCCESS) {
+                s += mf_albedo_table_eval(&at, wo) + mf_albedo_table_average(&at) + mf_brdf_ms_table(&at, wo, wi);
+                mf_albedo_table_release(&at);
+            }
+            {
+                mf_dielectric_ms_table dt;
+                if (mf_dielectric_ms_build(&dt, d, MF_R(1.5), 4, 1) == MF_SUCCESS) {
+                    s += mf_dielectric_albedo(&dt, wo) + mf_dielectric_bsdf_ms(&dt, wo, wi) + mf_dielectric_ms_pdf(&dt, wo, wi);
+                    s += mf_dielectric_ms_sample(&dt, wo, MF_R(0.2), MF_R(0.4), MF_R(0.6)).z;
+                    mf_dielectric_ms_release(&dt);
+                }
+                s += mf_dielectric_albedo_integrate(d, wo, MF_R(1.5), 1);
+            }
         s += mf_dielectric_bsdf(d, wo, wi, MF_R(1.5)) + mf_dielectric_pdf(d, wo, wi, MF_R(1.5));
         s += mf_dielectric_sample(d, wo, MF_R(1.5), MF_R(0.2), MF_R(0.7), MF_R(0.5)).z + mf_dielectric_sample_weight(d, wo, wi, MF_R(1.5));
     }
@@ -57,6 +75,7 @@ int main(void)
         s += mf_to_local(&fb, wo).z + mf_to_world(&fl, wo).z + rot.ax + cr + cg;
         s += mf_f0_from_ior(MF_R(1.5)) + mf_ior_from_f0(MF_R(0.04)) + mf_fresnel_schlick_f90(MF_R(0.04), MF_R(0.5), MF_R(0.5));
         s += mf_fresnel_dielectric_average(MF_R(1.5)) + mf_fresnel_conductor_average(MF_R(0.2), MF_R(3.0));
+        }
         s += mf_alpha_from_roughness(MF_R(0.5)) + mf_roughness_from_alpha(MF_R(0.25));
         {
             mf_vec3 wt;
