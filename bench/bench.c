@@ -13,6 +13,9 @@
 #include <time.h>
 #include <math.h>
 #include <stdlib.h>
+#ifdef MF_BENCH_BIG_TU
+#include "big_tu.h"
+#endif
 
 #define N 4096
 #define REPS 7
@@ -527,10 +530,12 @@ static void bench_beckmann_vndf(void)
     }
 }
 
+struct bench_kind { const char *name; mf_ndf d; };
+static void bench_core(const struct bench_kind *ks);
 int main(int argc, char **argv)
 {
-    struct { const char *name; mf_ndf d; } ks[5];
-    int i, k;
+    struct bench_kind ks[5];
+    int i;
     for (i = 0; i < N; ++i) {
         g_wo[i] = rnd_dir(MF_R(1.5));
         g_wi[i] = rnd_dir(MF_R(1.5));
@@ -563,6 +568,25 @@ int main(int argc, char **argv)
         bench_beckmann_vndf();
         return 0;
     }
+    if (argc > 1 && !strcmp(argv[1], "ibm")) {
+        bench_ibm();
+        return 0;
+    }
+    bench_core(ks);
+    if (argc > 1 && !strcmp(argv[1], "core")) return g_sink == g_sink ? 0 : 1;
+    bench_beckmann_vndf();
+    bench_tabulated();
+    bench_ibm();
+    bench_microsurface();
+    return g_sink == g_sink ? 0 : 1;
+}
+
+/* the analytic kinds, the generic API against plain code, transformed
+ * against plain, LEADR and LTC: the hot paths (tools/bench_inline.sh runs
+ * this part at -O2, -O3 -march=native and in a large translation unit) */
+static void bench_core(const struct bench_kind *ks)
+{
+    int i, k;
     {
         const mf_ndf *g = &ks[1].d;
         double base, ours, inl, pd, od, pg, og;
@@ -697,9 +721,4 @@ int main(int argc, char **argv)
         printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
         g_sink += s + (double)fr.albedo;
     }
-    bench_beckmann_vndf();
-    bench_tabulated();
-    bench_ibm();
-    bench_microsurface();
-    return g_sink == g_sink ? 0 : 1;
 }

@@ -17,7 +17,7 @@ MF_INLINE mf_ndf mf_beckmann(mf_real alpha_x, mf_real alpha_y)
 
 /* Per-distribution fast paths for D, Lambda and sampling (the same clamps as
  * the generic functions). */
-MF_INLINE mf_real mf_beckmann_D(mf_real ax, mf_real ay, mf_vec3 wm)
+MF_FORCE_INLINE mf_real mf_beckmann_D(mf_real ax, mf_real ay, mf_vec3 wm)
 {
     mf_real z2, e;
     if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
@@ -27,7 +27,7 @@ MF_INLINE mf_real mf_beckmann_D(mf_real ax, mf_real ay, mf_vec3 wm)
     return MF_EXP(-e) / (MF_PI * ax * ay * z2 * z2);
 }
 
-MF_INLINE mf_real mf_beckmann_lambda(mf_real ax, mf_real ay, mf_vec3 w)
+MF_FORCE_INLINE mf_real mf_beckmann_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real a2t2 = mf__a2t2(ax, ay, w), a;
     if (!(a2t2 > MF_R(1e-3))) return MF_R(0.0);   /* a > 31.6: Lambda < 1e-400 */
@@ -58,8 +58,8 @@ MF_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, 
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h). */
-MF_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
-MF_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
+MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
+MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
 MF_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
