@@ -888,6 +888,45 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
     return x;
 }
 
+/* cos and sin of 2 pi u, u in [0, 1], without a library call: the nearest
+ * quarter turn k = round(4u) is exact (4u - k is exact in binary), the rest
+ * t = (4u - k) pi/2 lies in [-pi/4, pi/4] where the Taylor series to t^9 / t^10
+ * (float) or t^17 / t^18 (double) is below half an ulp; the quarter turn
+ * picks and negates without branches (an index and exact factors +-1). */
+MF_FORCE_INLINE void mf__sincos_2pi(mf_real u, mf_real *c, mf_real *s)
+{
+    mf_real q = MF_R(4.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), t, t2, v[2];
+    int k = (int)(q + MF_R(0.5));
+    t = (q - (mf_real)k) * MF_R(1.57079632679489661923);
+    t2 = t * t;
+#ifdef MF_USE_DOUBLE
+    v[1] = 2.8114572543455207632e-15 - t2 * 8.2206352466243297170e-18;   /* 1/17!, 1/19! */
+    v[1] = 7.6471637318198164759e-13 - t2 * v[1];
+    v[1] = 1.6059043836821614599e-10 - t2 * v[1];
+    v[1] = 2.5052108385441718775e-08 - t2 * v[1];
+    v[1] = 2.7557319223985890653e-06 - t2 * v[1];
+    v[0] = 1.5619206968586225271e-16;                                 /* 1/18! */
+    v[0] = 4.7794773323873852974e-14 - t2 * v[0];
+    v[0] = 1.1470745597729724714e-11 - t2 * v[0];
+    v[0] = 2.0876756987868098979e-09 - t2 * v[0];
+    v[0] = 2.7557319223985890653e-07 - t2 * v[0];
+    v[0] = 2.4801587301587301587e-05 - t2 * v[0];
+#else
+    v[1] = MF_R(2.7557319223985890653e-06);
+    v[0] = MF_R(2.4801587301587301587e-05) - t2 * MF_R(2.7557319223985890653e-07);
+#endif
+    v[1] = MF_R(1.9841269841269841270e-04) - t2 * v[1];
+    v[1] = MF_R(8.3333333333333333333e-03) - t2 * v[1];
+    v[1] = MF_R(1.6666666666666666667e-01) - t2 * v[1];
+    v[1] = t - t * t2 * v[1];                                 /* sin t */
+    v[0] = MF_R(1.3888888888888888889e-03) - t2 * v[0];
+    v[0] = MF_R(4.1666666666666666667e-02) - t2 * v[0];
+    v[0] = MF_R(0.5) - t2 * v[0];
+    v[0] = MF_R(1.0) - t2 * v[0];                             /* cos t */
+    *c = v[k & 1] * (mf_real)(1 - ((k + 1) & 2));
+    *s = v[(k & 1) ^ 1] * (mf_real)(1 - (k & 2));
+}
+
 /* Regularized incomplete beta I_x(a, b) by Lentz's continued fraction
  * (converges fast for x < (a+1)/(a+b+2); the symmetry I_x(a,b) = 1 - I_{1-x}(b,a)
  * covers the rest). lbeta = log B(a, b), precomputed by the caller. */
@@ -1123,10 +1162,20 @@ MF_INLINE mf_real mf_beckmann_lambda_approx(mf_real ax, mf_real ay, mf_vec3 w)
 }
 
 MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_real *sx, mf_real *sy);
-MF_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real cv, sv, cp, sp, sx, sy, x, y;
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (w.x == MF_R(0.0) && w.y == MF_R(0.0)) {
+        /* exactly normal: the visible slopes are D's, a unit Gaussian of
+         * variance 1/2 per axis; polar form, radius^2 = -log(1 - u1) */
+        mf_real r2 = -MF_LOG(mf_max(MF_R(1.0) - mf_clamp(u1, MF_R(0.0), MF_R(1.0)), MF_TINY)), inv;
+        mf__sincos_2pi(u2, &cp, &sp);
+        x = ax * cp; y = ay * sp;
+        inv = MF_R(1.0) / MF_SQRT(MF_R(1.0) + r2 * (x * x + y * y));   /* |(-x r, -y r, 1)| from r^2: off the sqrt(r2) path */
+        sx = MF_SQRT(r2) * inv;
+        return mf_vec3_make(-x * sx, -y * sx, inv);
+    }
     mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
     mf__beckmann_visible_slopes(sv / mf_max(cv, MF_R(1e-30)), u1, u2, &sx, &sy);
     x = cp * sx - sp * sy;   /* rotate back to the view azimuth, then unstretch */
@@ -1137,12 +1186,12 @@ MF_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, 
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
-MF_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
     return mf__wm_from_slope_u(d->ax, d->ay, -MF_LOG1P(-t), u2);
 }
-MF_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
 }
