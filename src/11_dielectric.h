@@ -33,7 +33,7 @@
  * eta = n_transmitted / n_incident (as mf_fresnel_dielectric). *wt: unit, on
  * the other side. Returns 0 on total internal reflection or degenerate input
  * (then *wt is the zero vector). Snell: sin t = sin i / eta. */
-MF_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
+MF_FORCE_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
 {
     mf_real ci = mf_dot(wi, n), s2t, ct;
     *wt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
@@ -95,9 +95,11 @@ MF_FORCE_INLINE int mf__dielectric_prep(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta, 
     if (!mf__dielectric_setup(wo, wi, eta) || !mf__dielectric_half(*wo, *wi, *eta, h)) return 0;
     *oh = mf_dot(*wo, *h);
     *F = mf_fresnel_dielectric(*oh, *eta);
+    *den = MF_R(1.0);
+    if (wi->z > MF_R(0.0)) return 1;   /* reflection: no Jacobian denominator */
     x = mf_dot(*wi, *h) + *oh / *eta;
     *den = x * x;
-    return wi->z > MF_R(0.0) || *den > MF_R(0.0);
+    return *den > MF_R(0.0);
 }
 
 MF_FORCE_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
@@ -123,7 +125,7 @@ MF_FORCE_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
 
 /* Samples wi (reflected or transmitted) for wo on either side from three
  * uniform numbers; the zero vector means no sample. */
-MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
+MF_FORCE_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
 {
     mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     mf_real s = MF_R(1.0), F;
@@ -144,7 +146,7 @@ MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta,
 /* f |wi.z| / pdf for a wi from mf_dielectric_sample: G2 / G1(wo) = (1 +
  * Lambda(wo)) G2, divided by e^2 when transmitted (radiance transport);
  * for LEADR moments (a tilted mean surface) the ratio itself. */
-MF_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+MF_FORCE_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_real w;
     if (d->type == MF_NDF_LEADR) {   /* visible normals of a tilted mean surface: the ratio itself */
