@@ -31,7 +31,7 @@ EXR_STEPS  := exr_skip
 endif
 
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
-.PHONY: all test check test-c test-cpp test-double test-float warnings asan bench demo install clean cuda-check \
+.PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check \
         header header-check config-check package-check ltc-table energy-table tools \
         $(foreach s,header warnings config package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
@@ -277,6 +277,10 @@ bench: | $(BUILD)
 	$(CC) -std=c99 -O2 $(WARN) -DMF_USE_DOUBLE -DMF_BENCH_FLAGS="\"-std=c99 -O2 -DMF_USE_DOUBLE\"" -I. bench/bench.c -o $(BUILD)/bench_double -lm
 	./$(BUILD)/bench
 	./$(BUILD)/bench_double
+	sh tools/bench_inline.sh "$(CC)" 3
+# the hot paths at -O2, -O3 -march=native and in a large translation unit
+bench-inline: | $(BUILD)
+	sh tools/bench_inline.sh "$(CC)" 3
 
 # ---- make demo: each example is rebuilt only when its source or the header
 # ---- changed and rerun only when rebuilt; its output is printed with

@@ -163,6 +163,25 @@ typedef float mf_real;
 #endif
 #ifndef MF_INLINE
 #define MF_INLINE static inline MF_HD
+#define MF__INLINE_DEFAULT
+#endif
+/* MF_FORCE_INLINE: the small hot helpers (vector algebra, GGX and Beckmann D
+ * and Lambda, the generic front ends, BRDF and dielectric evaluation, the LTC
+ * edge term). At -O3 and in a translation unit holding the whole library,
+ * gcc's unit-growth limits otherwise move some of them out of line and the
+ * callers get up to 2x slower. A user-defined MF_INLINE is kept as it is. */
+#ifndef MF_FORCE_INLINE
+#if !defined(MF__INLINE_DEFAULT)
+#define MF_FORCE_INLINE MF_INLINE
+#elif defined(__CUDACC__)
+#define MF_FORCE_INLINE static __forceinline__ MF_HD
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF_FORCE_INLINE static inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define MF_FORCE_INLINE static __forceinline
+#else
+#define MF_FORCE_INLINE MF_INLINE
+#endif
 #endif
 #ifndef MFDEF
 #define MFDEF extern

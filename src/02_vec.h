@@ -9,23 +9,23 @@ typedef struct mf_basis { mf_vec3 t, b, n; } mf_basis;
 /* == 2. Vectors and frames                                                 */
 /* ======================================================================== */
 
-MF_INLINE mf_vec3 mf_vec3_make(mf_real x, mf_real y, mf_real z)
+MF_FORCE_INLINE mf_vec3 mf_vec3_make(mf_real x, mf_real y, mf_real z)
 {
     mf_vec3 v;
     v.x = x; v.y = y; v.z = z;
     return v;
 }
-MF_INLINE mf_real mf_dot(mf_vec3 a, mf_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-MF_INLINE mf_vec3 mf_add(mf_vec3 a, mf_vec3 b) { return mf_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
-MF_INLINE mf_vec3 mf_scale(mf_vec3 a, mf_real s) { return mf_vec3_make(a.x * s, a.y * s, a.z * s); }
-MF_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
+MF_FORCE_INLINE mf_real mf_dot(mf_vec3 a, mf_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+MF_FORCE_INLINE mf_vec3 mf_add(mf_vec3 a, mf_vec3 b) { return mf_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
+MF_FORCE_INLINE mf_vec3 mf_scale(mf_vec3 a, mf_real s) { return mf_vec3_make(a.x * s, a.y * s, a.z * s); }
+MF_FORCE_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 {
     return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 /* x clamped to [lo, hi]; NaN gives lo */
-MF_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
-MF_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
-MF_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+MF_FORCE_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
+MF_FORCE_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
+MF_FORCE_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
 /* 1 if x is finite, read from its bits: -ffast-math (__FAST_MATH__) lets the
  * compiler assume that no value is NaN or Inf and fold x == x, x - x == 0 or
  * isnan(x) to true; the validation of data that may index memory uses this. */
@@ -46,10 +46,10 @@ MF_INLINE int mf__finite_bits(mf_real x)
 #endif
 }
 /* x capped at MF_BIG; NaN becomes 0 (the results that may overflow float) */
-MF_INLINE mf_real mf__cap(mf_real x) { return x < MF_BIG ? x : (x == x ? MF_BIG : MF_R(0.0)); }
+MF_FORCE_INLINE mf_real mf__cap(mf_real x) { return x < MF_BIG ? x : (x == x ? MF_BIG : MF_R(0.0)); }
 
 /* Unit vector along v; the zero vector when v is zero (or not finite). */
-MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)
+MF_FORCE_INLINE mf_vec3 mf_normalize(mf_vec3 v)
 {
     mf_real l2 = mf_dot(v, v);
     if (!(l2 > MF_R(0.0)) || !(l2 < MF_BIG)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
@@ -57,13 +57,13 @@ MF_INLINE mf_vec3 mf_normalize(mf_vec3 v)
 }
 
 /* Mirror reflection of w about the unit normal m: 2 (w.m) m - w. */
-MF_INLINE mf_vec3 mf_reflect(mf_vec3 w, mf_vec3 m)
+MF_FORCE_INLINE mf_vec3 mf_reflect(mf_vec3 w, mf_vec3 m)
 {
     return mf_add(mf_scale(m, MF_R(2.0) * mf_dot(w, m)), mf_scale(w, MF_R(-1.0)));
 }
 
 /* 2x2 matrices, row-major: M = [m00 m01; m10 m11] acts on column vectors. */
-MF_INLINE mf_mat2 mf_mat2_make(mf_real m00, mf_real m01, mf_real m10, mf_real m11)
+MF_FORCE_INLINE mf_mat2 mf_mat2_make(mf_real m00, mf_real m01, mf_real m10, mf_real m11)
 {
     mf_mat2 m;
     m.m00 = m00; m.m01 = m01; m.m10 = m10; m.m11 = m11;
@@ -85,11 +85,11 @@ MF_INLINE mf_mat2 mf_mat2_inverse(mf_mat2 a)
     return mf_mat2_make(a.m11 * inv, -a.m01 * inv, -a.m10 * inv, a.m00 * inv);
 }
 /* (M v.xy, v.z) and (M^T v.xy, v.z) */
-MF_INLINE mf_vec3 mf_mat2_apply(mf_mat2 a, mf_vec3 v)
+MF_FORCE_INLINE mf_vec3 mf_mat2_apply(mf_mat2 a, mf_vec3 v)
 {
     return mf_vec3_make(a.m00 * v.x + a.m01 * v.y, a.m10 * v.x + a.m11 * v.y, v.z);
 }
-MF_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
+MF_FORCE_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
 {
     return mf_vec3_make(a.m00 * v.x + a.m10 * v.y, a.m01 * v.x + a.m11 * v.y, v.z);
 }

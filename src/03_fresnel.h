@@ -8,7 +8,7 @@
 /* Dielectric; eta = n_transmitted / n_incident, clamped to [1e-6, 1e6] (<= 0
  * or NaN gives 0). A negative cos_theta_i means the light arrives from the
  * other side: eta is inverted. 1 on total internal reflection. */
-MF_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
+MF_FORCE_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 {
     mf_real ci, s2t, ct, rs, rp;
     if (!(eta > MF_R(0.0)) || !(cos_theta_i == cos_theta_i)) return MF_R(0.0);
@@ -65,7 +65,7 @@ MF_INLINE mf_real mf_ior_from_f0(mf_real f0)
 
 /* Schlick with an edge value: f0 + (f90 - f0)(1 - cos)^5 (f90 = 1 is
  * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular occlusion). */
-MF_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_theta)
+MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_theta)
 {
     mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0)), m2;
     if (!(m == m)) m = MF_R(0.0);
@@ -75,7 +75,7 @@ MF_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_th
     return f0 + (f90 - f0) * m2 * m2 * m;
 }
 /* Schlick's approximation f0 + (1 - f0)(1 - cos)^5: the f90 = 1 case. */
-MF_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
+MF_FORCE_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
 {
     return mf_fresnel_schlick_f90(f0, MF_R(1.0), cos_theta);
 }

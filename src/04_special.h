@@ -68,6 +68,45 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
     return x;
 }
 
+/* cos and sin of 2 pi u, u in [0, 1], without a library call: the nearest
+ * quarter turn k = round(4u) is exact (4u - k is exact in binary), the rest
+ * t = (4u - k) pi/2 lies in [-pi/4, pi/4] where the Taylor series to t^9 / t^10
+ * (float) or t^17 / t^18 (double) is below half an ulp; the quarter turn
+ * picks and negates without branches (an index and exact factors +-1). */
+MF_FORCE_INLINE void mf__sincos_2pi(mf_real u, mf_real *c, mf_real *s)
+{
+    mf_real q = MF_R(4.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), t, t2, v[2];
+    int k = (int)(q + MF_R(0.5));
+    t = (q - (mf_real)k) * MF_R(1.57079632679489661923);
+    t2 = t * t;
+#ifdef MF_USE_DOUBLE
+    v[1] = 2.8114572543455207632e-15 - t2 * 8.2206352466243297170e-18;   /* 1/17!, 1/19! */
+    v[1] = 7.6471637318198164759e-13 - t2 * v[1];
+    v[1] = 1.6059043836821614599e-10 - t2 * v[1];
+    v[1] = 2.5052108385441718775e-08 - t2 * v[1];
+    v[1] = 2.7557319223985890653e-06 - t2 * v[1];
+    v[0] = 1.5619206968586225271e-16;                                 /* 1/18! */
+    v[0] = 4.7794773323873852974e-14 - t2 * v[0];
+    v[0] = 1.1470745597729724714e-11 - t2 * v[0];
+    v[0] = 2.0876756987868098979e-09 - t2 * v[0];
+    v[0] = 2.7557319223985890653e-07 - t2 * v[0];
+    v[0] = 2.4801587301587301587e-05 - t2 * v[0];
+#else
+    v[1] = MF_R(2.7557319223985890653e-06);
+    v[0] = MF_R(2.4801587301587301587e-05) - t2 * MF_R(2.7557319223985890653e-07);
+#endif
+    v[1] = MF_R(1.9841269841269841270e-04) - t2 * v[1];
+    v[1] = MF_R(8.3333333333333333333e-03) - t2 * v[1];
+    v[1] = MF_R(1.6666666666666666667e-01) - t2 * v[1];
+    v[1] = t - t * t2 * v[1];                                 /* sin t */
+    v[0] = MF_R(1.3888888888888888889e-03) - t2 * v[0];
+    v[0] = MF_R(4.1666666666666666667e-02) - t2 * v[0];
+    v[0] = MF_R(0.5) - t2 * v[0];
+    v[0] = MF_R(1.0) - t2 * v[0];                             /* cos t */
+    *c = v[k & 1] * (mf_real)(1 - ((k + 1) & 2));
+    *s = v[(k & 1) ^ 1] * (mf_real)(1 - (k & 2));
+}
+
 /* Regularized incomplete beta I_x(a, b) by Lentz's continued fraction
  * (converges fast for x < (a+1)/(a+b+2); the symmetry I_x(a,b) = 1 - I_{1-x}(b,a)
  * covers the rest). lbeta = log B(a, b), precomputed by the caller. */

@@ -105,7 +105,7 @@ MF_INLINE mf_ndf mf__ndf_init(int type, mf_real ax, mf_real ay)
 }
 
 /* sum of squared scaled slopes times cos^2: m.x^2/ax^2 + m.y^2/ay^2 */
-MF_INLINE mf_real mf__q(mf_real ax, mf_real ay, mf_vec3 m)
+MF_FORCE_INLINE mf_real mf__q(mf_real ax, mf_real ay, mf_vec3 m)
 {
     mf_real x = m.x / ax, y = m.y / ay;
     return x * x + y * y;
@@ -115,7 +115,7 @@ MF_INLINE mf_real mf__q(mf_real ax, mf_real ay, mf_vec3 m)
  * finite, capped at MF_A2T2_MAX (alpha 1e4 under a stretch at the horizon
  * overflows float; NaN gives the cap too), so the Lambdas never see inf/inf */
 #define MF_A2T2_MAX MF_R(1e30)
-MF_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
+MF_FORCE_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real x = ax * w.x, y = ay * w.y;
     mf_real r = (x * x + y * y) / mf_max(w.z * w.z, MF_R(1e-30));
@@ -124,7 +124,7 @@ MF_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
 
 /* wm from an unstretched slope direction (cos phi, sin phi) and squared unit
  * slope radius r2, stretched by (ax, ay): wm ~ (ax r cos, ay r sin, 1). */
-MF_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
+MF_FORCE_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
 {
     if (!(r2 < MF_R(1e30))) return mf_normalize(mf_vec3_make(ax * cp, ay * sp, MF_R(0.0)));
     r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
@@ -132,7 +132,7 @@ MF_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf_real 
 }
 
 /* wm for the squared unit slope radius r2 at the azimuth 2 pi u2 (mf__wm_from_slope). */
-MF_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
     mf_real phi = MF_R(2.0) * MF_PI * u2;
     return mf__wm_from_slope(ax, ay, r2, MF_COS(phi), MF_SIN(phi));
@@ -140,7 +140,7 @@ MF_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_rea
 
 /* Stretch w into the unit-roughness configuration; returns cos and sin of its
  * polar angle and the cos/sin of its azimuth. */
-MF_INLINE void mf__stretch_view(mf_real ax, mf_real ay, mf_vec3 w, mf_real *cv, mf_real *sv,
+MF_FORCE_INLINE void mf__stretch_view(mf_real ax, mf_real ay, mf_vec3 w, mf_real *cv, mf_real *sv,
                                 mf_real *cp, mf_real *sp)
 {
     mf_vec3 v = mf_normalize(mf_vec3_make(ax * w.x, ay * w.y, mf_max(w.z, MF_R(0.0))));

@@ -17,7 +17,7 @@ MF_INLINE mf_ndf mf_beckmann(mf_real alpha_x, mf_real alpha_y)
 
 /* Per-distribution fast paths for D, Lambda and sampling (the same clamps as
  * the generic functions). */
-MF_INLINE mf_real mf_beckmann_D(mf_real ax, mf_real ay, mf_vec3 wm)
+MF_FORCE_INLINE mf_real mf_beckmann_D(mf_real ax, mf_real ay, mf_vec3 wm)
 {
     mf_real z2, e;
     if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
@@ -27,7 +27,7 @@ MF_INLINE mf_real mf_beckmann_D(mf_real ax, mf_real ay, mf_vec3 wm)
     return MF_EXP(-e) / (MF_PI * ax * ay * z2 * z2);
 }
 
-MF_INLINE mf_real mf_beckmann_lambda(mf_real ax, mf_real ay, mf_vec3 w)
+MF_FORCE_INLINE mf_real mf_beckmann_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real a2t2 = mf__a2t2(ax, ay, w), a;
     if (!(a2t2 > MF_R(1e-3))) return MF_R(0.0);   /* a > 31.6: Lambda < 1e-400 */
@@ -46,10 +46,20 @@ MF_INLINE mf_real mf_beckmann_lambda_approx(mf_real ax, mf_real ay, mf_vec3 w)
 }
 
 MF_COLD void mf__beckmann_visible_slopes(mf_real tv, mf_real u1, mf_real u2, mf_real *sx, mf_real *sy);
-MF_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real cv, sv, cp, sp, sx, sy, x, y;
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (w.x == MF_R(0.0) && w.y == MF_R(0.0)) {
+        /* exactly normal: the visible slopes are D's, a unit Gaussian of
+         * variance 1/2 per axis; polar form, radius^2 = -log(1 - u1) */
+        mf_real r2 = -MF_LOG(mf_max(MF_R(1.0) - mf_clamp(u1, MF_R(0.0), MF_R(1.0)), MF_TINY)), inv;
+        mf__sincos_2pi(u2, &cp, &sp);
+        x = ax * cp; y = ay * sp;
+        inv = MF_R(1.0) / MF_SQRT(MF_R(1.0) + r2 * (x * x + y * y));   /* |(-x r, -y r, 1)| from r^2: off the sqrt(r2) path */
+        sx = MF_SQRT(r2) * inv;
+        return mf_vec3_make(-x * sx, -y * sx, inv);
+    }
     mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
     mf__beckmann_visible_slopes(sv / mf_max(cv, MF_R(1e-30)), u1, u2, &sx, &sy);
     x = cp * sx - sp * sy;   /* rotate back to the view azimuth, then unstretch */
@@ -58,14 +68,14 @@ MF_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, 
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h). */
-MF_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
-MF_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
-MF_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
+MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
+MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
     return mf__wm_from_slope_u(d->ax, d->ay, -MF_LOG1P(-t), u2);
 }
-MF_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
 }

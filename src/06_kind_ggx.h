@@ -15,7 +15,7 @@ MF_INLINE mf_ndf mf_ggx(mf_real alpha_x, mf_real alpha_y)
     return mf__ndf_init(MF_NDF_GGX, alpha_x, alpha_y);
 }
 
-MF_INLINE mf_real mf_ggx_D(mf_real ax, mf_real ay, mf_vec3 wm)
+MF_FORCE_INLINE mf_real mf_ggx_D(mf_real ax, mf_real ay, mf_vec3 wm)
 {
     mf_real t;
     if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
@@ -23,7 +23,7 @@ MF_INLINE mf_real mf_ggx_D(mf_real ax, mf_real ay, mf_vec3 wm)
     return MF_R(1.0) / (MF_PI * ax * ay * t * t);
 }
 
-MF_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
+MF_FORCE_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real a2t2 = mf__a2t2(ax, ay, w);
     return a2t2 / (MF_R(2.0) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + a2t2)));
@@ -33,7 +33,7 @@ MF_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
  * final normalization; w need not be unit. (0,0,1) for degenerate input. k
  * scales the cap's lower bound -k v.z: 1 is the whole visible hemisphere, k < 1
  * the bounded cap of Eto & Tokuyoshi 2023 (mf_ggx_sample_visible_bounded). */
-MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
+MF_FORCE_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
 {
     mf_vec3 v, h;
     mf_real phi, z, s, l2, b;
@@ -50,7 +50,7 @@ MF_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, m
     if (!(mf_dot(h, h) > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     return h;
 }
-MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 h;
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
@@ -59,14 +59,14 @@ MF_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w, mf_re
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h). */
-MF_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
-MF_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
-MF_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
+MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
     return mf__wm_from_slope_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
 }
-MF_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
 }

@@ -92,7 +92,7 @@ MF_INLINE mf_ndf mf_gtr_anisotropic(mf_real alpha_x, mf_real alpha_y, mf_real ga
 
 /* D of the untransformed distribution, homogeneous of degree -4 in wm: GGX
  * and Beckmann inline, the other kinds through the dispatch (05_ndf.h). */
-MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
+MF_FORCE_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 {
     if (d->type == MF_NDF_GGX) return mf_ggx_D(d->ax, d->ay, wm);
     if (d->type == MF_NDF_BECKMANN) return mf_beckmann_D(d->ax, d->ay, wm);
@@ -100,7 +100,7 @@ MF_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 }
 
 /* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
-MF_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
+MF_FORCE_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
 {
     mf_real r;
     if (!d->transformed) return mf__D_base(d, wm);

@@ -17,11 +17,11 @@
  *             GGX (see make bench). */
 
 /* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
-MF_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
+MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
 
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
-MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
@@ -34,7 +34,7 @@ MF_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 /* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
  * inline, the other kinds out of line. Transformed kinds: the base's visible
  * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). */
-MF_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
     u1 = mf__u01(u1); u2 = mf__u01(u2);

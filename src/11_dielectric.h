@@ -33,7 +33,7 @@
  * eta = n_transmitted / n_incident (as mf_fresnel_dielectric). *wt: unit, on
  * the other side. Returns 0 on total internal reflection or degenerate input
  * (then *wt is the zero vector). Snell: sin t = sin i / eta. */
-MF_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
+MF_FORCE_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
 {
     mf_real ci = mf_dot(wi, n), s2t, ct;
     *wt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
@@ -49,7 +49,7 @@ MF_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
 /* wo above (after the inversion), e relative index across: the generalized
  * half vector of (wo, wi) facing up, and 1 when the configuration is valid
  * (wo and wi on the facet's correct sides). */
-MF_INLINE int mf__dielectric_half(mf_vec3 wo, mf_vec3 wi, mf_real e, mf_vec3 *h)
+MF_FORCE_INLINE int mf__dielectric_half(mf_vec3 wo, mf_vec3 wi, mf_real e, mf_vec3 *h)
 {
     mf_vec3 m = wi.z > MF_R(0.0) ? mf_add(wo, wi) : mf_add(wo, mf_scale(wi, e));
     mf_real l2 = mf_dot(m, m);
@@ -62,14 +62,14 @@ MF_INLINE int mf__dielectric_half(mf_vec3 wo, mf_vec3 wi, mf_real e, mf_vec3 *h)
 }
 
 /* 1 when eta is a usable index and w a finite direction off the horizon */
-MF_INLINE int mf__dielectric_ok(mf_vec3 w, mf_real eta)
+MF_FORCE_INLINE int mf__dielectric_ok(mf_vec3 w, mf_real eta)
 {
     return eta > MF_R(0.0) && eta < MF_BIG && MF_FABS(w.x) + MF_FABS(w.y) + MF_FABS(w.z) < MF_BIG && w.z != MF_R(0.0);
 }
 
 /* Prepares (wo, wi, eta) for the evaluation: inverts both when wo is below;
  * 0 when there is nothing to evaluate. */
-MF_INLINE int mf__dielectric_setup(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta)
+MF_FORCE_INLINE int mf__dielectric_setup(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta)
 {
     if (!mf__dielectric_ok(*wo, *eta) || !mf__dielectric_ok(*wi, *eta)) return 0;   /* NaN, infinite, horizon */
     if (wo->z < MF_R(0.0)) {
@@ -80,38 +80,40 @@ MF_INLINE int mf__dielectric_setup(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta)
     return 1;
 }
 
-MF_INLINE mf_real mf__dielectric_G2(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+MF_FORCE_INLINE mf_real mf__dielectric_G2(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
     /* wi below: its masking on the lower side is Lambda(-wi) (see above) */
-    return MF_R(1.0) / (MF_R(1.0) + mf_lambda(d, wo) + mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi));
+    return mf__G2_up(d, wo, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
 }
 
 /* The common part of eval and pdf: after the setup, the half vector h, wo.h,
  * the Fresnel reflectance there and, for transmission, the Jacobian's
  * denominator (wi.h + wo.h / e)^2 (Walter Eq. 17). 0 when nothing to do. */
-MF_INLINE int mf__dielectric_prep(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta, mf_vec3 *h, mf_real *oh, mf_real *F, mf_real *den)
+MF_FORCE_INLINE int mf__dielectric_prep(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta, mf_vec3 *h, mf_real *oh, mf_real *F, mf_real *den)
 {
     mf_real x;
     if (!mf__dielectric_setup(wo, wi, eta) || !mf__dielectric_half(*wo, *wi, *eta, h)) return 0;
     *oh = mf_dot(*wo, *h);
     *F = mf_fresnel_dielectric(*oh, *eta);
+    *den = MF_R(1.0);
+    if (wi->z > MF_R(0.0)) return 1;   /* reflection: no Jacobian denominator */
     x = mf_dot(*wi, *h) + *oh / *eta;
     *den = x * x;
-    return wi->z > MF_R(0.0) || *den > MF_R(0.0);
+    return *den > MF_R(0.0);
 }
 
-MF_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+MF_FORCE_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_vec3 h;
     mf_real F, oh, den, g;
     if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return MF_R(0.0);
-    g = mf_D(d, h) * mf__dielectric_G2(d, wo, wi) / wo.z;
+    g = mf_D(d, h) * mf__dielectric_G2(d, wo, wi) / wo.z;   /* two divisions: no underflow of wo.z wi.z */
     if (wi.z > MF_R(0.0)) return mf_min(F * g / (MF_R(4.0) * wi.z), MF_BIG);
-    return mf_min((MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z) / (eta * eta), MF_BIG);
+    return mf_min((MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z * eta * eta), MF_BIG);
 }
 
 /* Density of mf_dielectric_sample per unit solid angle of wi (either side). */
-MF_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+MF_FORCE_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_vec3 h;
     mf_real F, oh, den, dv;
@@ -123,7 +125,7 @@ MF_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_
 
 /* Samples wi (reflected or transmitted) for wo on either side from three
  * uniform numbers; the zero vector means no sample. */
-MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
+MF_FORCE_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
 {
     mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     mf_real s = MF_R(1.0), F;
@@ -144,7 +146,7 @@ MF_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta,
 /* f |wi.z| / pdf for a wi from mf_dielectric_sample: G2 / G1(wo) = (1 +
  * Lambda(wo)) G2, divided by e^2 when transmitted (radiance transport);
  * for LEADR moments (a tilted mean surface) the ratio itself. */
-MF_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+MF_FORCE_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_real w;
     if (d->type == MF_NDF_LEADR) {   /* visible normals of a tilted mean surface: the ratio itself */

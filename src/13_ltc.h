@@ -18,7 +18,7 @@ typedef struct mf_ltc {
     mf_real det_inv;    /* |det M^-1| */
 } mf_ltc;
 
-MF_INLINE mf_vec3 mf__mat3_apply(const mf_real *a, mf_vec3 v)
+MF_FORCE_INLINE mf_vec3 mf__mat3_apply(const mf_real *a, mf_vec3 v)
 {
     return mf_vec3_make(a[0] * v.x + a[1] * v.y + a[2] * v.z, a[3] * v.x + a[4] * v.y + a[5] * v.z,
                         a[6] * v.x + a[7] * v.y + a[8] * v.z);
@@ -105,7 +105,7 @@ MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d,
 }
 
 /* D(w), per steradian: |det M^-1| (M^-1 w).z / (pi |M^-1 w|^4) where positive. */
-MF_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
+MF_FORCE_INLINE mf_real mf_ltc_eval(const mf_ltc *l, mf_vec3 w)
 {
     mf_vec3 v = mf__mat3_apply(l->Minv, w);
     mf_real l2 = mf_dot(v, v);
@@ -122,7 +122,7 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 /* Integral of the cosine lobe's vector irradiance over the great arc from a to
  * b (unit vectors): (theta / sin theta) (a x b), theta = atan2(|a x b|, a.b),
  * accurate for tiny and for nearly antipodal arcs (no acos, no 1 - x^2). */
-MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+MF_FORCE_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
 {
     mf_vec3 c = mf_cross(a, b);
     mf_real s = MF_SQRT(mf_dot(c, c)), d = mf_dot(a, b);

@@ -6,7 +6,7 @@ CC=$1; CXX=$2; HAVE_CLANG=$3; WARN=$4; B=$5
 set -e
 # every public function of the header (inline, cold or in the implementation)
 # must be named in tests/warn_check.c, so each one is compiled and instantiated
-missing=$(grep -oE '^(MF_INLINE|MF_COLD|MFDEF) [^(]*[ *]mf_[a-z][A-Za-z0-9_]*\(' microfacet.h |
+missing=$(grep -oE '^(MF_INLINE|MF_FORCE_INLINE|MF_COLD|MFDEF) [^(]*[ *]mf_[a-z][A-Za-z0-9_]*\(' microfacet.h |
           sed -E 's/.*[ *](mf_[A-Za-z0-9_]*)\($/\1/' | sort -u |
           while read -r f; do grep -q "\b$f\b" tests/warn_check.c || printf '%s ' "$f"; done)
 if [ -n "$missing" ]; then echo "warnings: tests/warn_check.c does not name: $missing"; exit 1; fi
