@@ -2450,23 +2450,28 @@ MF_INLINE mf_ltc mf_ltc_from_matrix(const mf_real M[3][3])
 }
 
 /* The LTC of the usual 4/5-coefficient tables, which store the inverse
- * M^-1 = [a 0 b; 0 c 0; d 0 e] (e = 1 in 4-coefficient tables). */
+ * M^-1 = [a 0 b; 0 c 0; d 0 e] (e = 1 in 4-coefficient tables). Its inverse
+ * in closed form, k = ae - bd: M = [e/k 0 -b/k; 0 1/c 0; -d/k 0 a/k],
+ * |det M^-1| = |c k|; singular (the Hadamard test above), non-finite or
+ * overflowing input gives M = I. */
 MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d, mf_real e)
 {
-    mf_real inv[3][3], m[9], det;
     mf_ltc l;
-    int i;
-    inv[0][0] = a; inv[0][1] = 0; inv[0][2] = b;
-    inv[1][0] = 0; inv[1][1] = c; inv[1][2] = 0;
-    inv[2][0] = d; inv[2][1] = 0; inv[2][2] = e;
-    for (i = 0; i < 9; ++i) m[i] = inv[i / 3][i % 3];
-    det = mf__mat3_inverse(m, l.M);
-    if (!(MF_FABS(det) > MF_R(0.0))) {
-        const mf_real I[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-        return mf_ltc_from_matrix9(I);
+    mf_real k = a * e - b * d, rk, rc, h = MF_LTC_MIN_DET_REL * MF_LTC_MIN_DET_REL;
+    if (!(k * k > h * (a * a + b * b) * (d * d + e * e)) || !(c * c > MF_R(0.0)) ||
+        !(MF_FABS(k) < MF_BIG) || !(MF_FABS(c * k) < MF_BIG) || !(MF_FABS(c * k) * MF_BIG > MF_R(1.0)) ||
+        !(MF_FABS(a) + MF_FABS(b) + MF_FABS(d) + MF_FABS(e) < MF_BIG)) {
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        return mf_ltc_from_matrix9(I9);
     }
-    for (i = 0; i < 9; ++i) l.Minv[i] = m[i];
-    l.det_inv = MF_FABS(det);
+    rk = MF_R(1.0) / k; rc = MF_R(1.0) / c;
+    l.Minv[0] = a; l.Minv[1] = MF_R(0.0); l.Minv[2] = b;
+    l.Minv[3] = MF_R(0.0); l.Minv[4] = c; l.Minv[5] = MF_R(0.0);
+    l.Minv[6] = d; l.Minv[7] = MF_R(0.0); l.Minv[8] = e;
+    l.M[0] = e * rk; l.M[1] = MF_R(0.0); l.M[2] = -b * rk;
+    l.M[3] = MF_R(0.0); l.M[4] = rc; l.M[5] = MF_R(0.0);
+    l.M[6] = -d * rk; l.M[7] = MF_R(0.0); l.M[8] = a * rk;
+    l.det_inv = MF_FABS(c * k);
     return l;
 }
 
@@ -2485,54 +2490,118 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
     return mf_normalize(mf__mat3_apply(l->M, mf__sample_cosine(u1, u2)));
 }
 
-/* Integral of the cosine lobe's vector irradiance over the great arc from a to
- * b (unit vectors): (theta / sin theta) (a x b), theta = atan2(|a x b|, a.b),
- * accurate for tiny and for nearly antipodal arcs (no acos, no 1 - x^2). */
-MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+/* theta / sin theta for d = cos theta in [0, 1]: a (3, 3) rational fit,
+ * relative error 1.1e-9 (minimax in the relative error, long double fit). */
+MF_INLINE mf_real mf__theta_sin(mf_real d)
 {
-    mf_vec3 c = mf_cross(a, b);
-    mf_real s = MF_SQRT(mf_dot(c, c)), d = mf_dot(a, b);
+    mf_real p = MF_R(1.5707963252261846) + d * (MF_R(1.6387870344331739) + d * (MF_R(0.3558987258520707) + d * MF_R(0.0045747321699359841)));
+    mf_real q = MF_R(1.0) + d * (MF_R(1.6799038611629685) + d * (MF_R(0.79603535320100818) + d * MF_R(0.094117599751420625)));
+    return p / q;
+}
+
+/* Integral of the cosine lobe's vector irradiance over the great arc from a to
+ * b (unit vectors): (theta / sin theta) (a x b). a x b is formed as
+ * a x (b - a) for theta <= pi/2 and a x (a + b) beyond, where the
+ * differences are exact, so short and nearly antipodal arcs keep their
+ * relative accuracy; theta / sin theta is the rational fit for theta <= pi/2
+ * and pi / sin theta - (pi - theta) / sin(pi - theta) beyond, with sin theta
+ * = |a x b| (no 1 - d^2). The exact atan2 form is used with MF_USE_DOUBLE or
+ * MF_LTC_EXACT_EDGE. A zero or exactly antipodal arc gives 0. */
+#if defined(MF_USE_DOUBLE) && !defined(MF_LTC_EXACT_EDGE)
+#define MF_LTC_EXACT_EDGE
+#endif
+MF_INLINE mf_vec3 mf__vsub(mf_vec3 a, mf_vec3 b) { return mf_vec3_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+MF_INLINE mf_vec3 mf__edge_vector_fast(mf_vec3 a, mf_vec3 b)
+{
+    mf_real d = mf_dot(a, b), s2, f;
+    mf_vec3 c;
+    if (d >= MF_R(0.0)) return mf_scale(mf_cross(a, mf__vsub(b, a)), mf__theta_sin(d));
+    c = mf_cross(a, mf_add(a, b));
+    s2 = mf_dot(c, c);
+    if (!(s2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    f = MF_SQRT(s2);
+    return mf_scale(c, MF_PI / f - mf__theta_sin(-d));
+}
+MF_INLINE mf_vec3 mf__edge_vector_exact(mf_vec3 a, mf_vec3 b)
+{
+    mf_real d = mf_dot(a, b), s;
+    mf_vec3 c = d >= MF_R(0.0) ? mf_cross(a, mf__vsub(b, a)) : mf_cross(a, mf_add(a, b));
+    s = MF_SQRT(mf_dot(c, c));
     if (!(s > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     return mf_scale(c, MF_ATAN2(s, d) / s);
+}
+/* its z component only */
+MF_INLINE mf_real mf__edge_z(mf_vec3 a, mf_vec3 b)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    return mf__edge_vector_exact(a, b).z;
+#else
+    mf_real d = a.x * b.x + a.y * b.y + a.z * b.z, cx, cy, cz, s2;
+    if (d >= MF_R(0.0)) return (a.x * (b.y - a.y) - a.y * (b.x - a.x)) * mf__theta_sin(d);
+    cx = a.y * (a.z + b.z) - a.z * (a.y + b.y);
+    cy = a.z * (a.x + b.x) - a.x * (a.z + b.z);
+    cz = a.x * (a.y + b.y) - a.y * (a.x + b.x);
+    s2 = cx * cx + cy * cy + cz * cz;
+    if (!(s2 > MF_R(1e-30))) return MF_R(0.0);
+    return cz * (MF_PI / MF_SQRT(s2) - mf__theta_sin(-d));
+#endif
+}
+MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    return mf__edge_vector_exact(a, b);
+#else
+    return mf__edge_vector_fast(a, b);
+#endif
+}
+
+MF_INLINE mf_vec3 mf__unit_or_zero(mf_vec3 v)
+{
+    mf_real l2 = v.x * v.x + v.y * v.y + v.z * v.z, r = l2 > MF_R(0.0) ? MF_R(1.0) / MF_SQRT(l2) : MF_R(0.0);
+    return mf_vec3_make(v.x * r, v.y * r, v.z * r);
 }
 
 /* Signed cosine form factor (z component of the vector form factor, over
  * 2 pi) of the polygon p[0..n-1] transformed by A (NULL: identity), clipped
  * to z >= 0 on the fly: every edge is cut where it crosses the horizon and the
  * exit and entry points are joined along the horizon, so no vertex buffer is
- * needed and any n works. */
+ * needed and any n works. Each vertex is transformed and normalized once. */
 MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
 {
-    int i, s = -1;
+    int i, j, s = -1;
     mf_real sum = MF_R(0.0);
-    mf_vec3 exit_pt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), a, b;
+    mf_vec3 exit_pt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), a, an, b, bn, first, first_n;
     if (!p || n < 3) return MF_R(0.0);
     for (i = 0; i < n; ++i) {
         a = A ? mf__mat3_apply(A, p[i]) : p[i];
         if (a.z > MF_R(0.0)) { s = i; break; }
     }
     if (s < 0) return MF_R(0.0);   /* entirely below the horizon */
-    a = A ? mf__mat3_apply(A, p[s]) : p[s];
-    for (i = 1; i <= n; ++i) {
-        int above_a = a.z > MF_R(0.0), above_b;
-        b = A ? mf__mat3_apply(A, p[(s + i) % n]) : p[(s + i) % n];
-        above_b = b.z > MF_R(0.0);
-        if (above_a && above_b) {
-            sum += mf__edge_vector(mf_normalize(a), mf_normalize(b)).z;
-        } else if (above_a || above_b) {
-            mf_real t = a.z / (a.z - b.z);
-            mf_vec3 x = mf_add(a, mf_scale(mf_add(b, mf_scale(a, MF_R(-1.0))), t));
-            x.z = MF_R(0.0);
-            x = mf_normalize(x);
-            if (above_a) {
-                sum += mf__edge_vector(mf_normalize(a), x).z;
-                exit_pt = x;
-            } else {
-                sum += mf__edge_vector(exit_pt, x).z;     /* along the horizon */
-                sum += mf__edge_vector(x, mf_normalize(b)).z;
-            }
+    first = a;
+    first_n = an = mf__unit_or_zero(a);
+    for (i = 1, j = s; i <= n; ++i) {
+        if (++j == n) j = 0;
+        if (i == n) { b = first; bn = first_n; }
+        else {
+            b = A ? mf__mat3_apply(A, p[j]) : p[j];
+            bn = b.z > MF_R(0.0) ? mf__unit_or_zero(b) : b;
         }
-        a = b;
+        if (a.z > MF_R(0.0)) {
+            if (b.z > MF_R(0.0)) sum += mf__edge_z(an, bn);
+            else {   /* leaves: a.z b - b.z a is on the segment and on the horizon */
+                mf_vec3 x = mf__vsub(mf_scale(b, a.z), mf_scale(a, b.z));
+                x.z = MF_R(0.0);
+                x = mf__unit_or_zero(x);
+                sum += mf__edge_z(an, x);
+                exit_pt = x;
+            }
+        } else if (b.z > MF_R(0.0)) {   /* enters: along the horizon, then up */
+            mf_vec3 x = mf__vsub(mf_scale(a, b.z), mf_scale(b, a.z));
+            x.z = MF_R(0.0);
+            x = mf__unit_or_zero(x);
+            sum += mf__edge_z(exit_pt, x) + mf__edge_z(x, bn);
+        }
+        a = b; an = bn;
     }
     return sum * MF_R(0.15915494309189533577);   /* 1 / (2 pi) */
 }
@@ -2541,6 +2610,7 @@ MF_INLINE mf_real mf__sided(mf_real ff, int two_sided)
 {
     /* counterclockwise seen from the shading point is the front */
     ff = -ff;
+    if (!(ff == ff)) return MF_R(0.0);
     if (two_sided) return MF_FABS(ff);
     return mf_max(ff, MF_R(0.0));
 }
@@ -5433,11 +5503,18 @@ MFDEF void mf_ltc_table_release(mf_ltc_table *t)
     t->n_theta = t->n_alpha = 0;
 }
 
+/* Bilinear lookup in (sqrt(1 - cos theta_o), sqrt(alpha)). Each corner's
+ * M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1] is first rescaled to a middle
+ * entry of 1 (the LTC does not change): the stored form's entries grow like
+ * 1 / alpha, and blending them unscaled between rows of small alpha bends the
+ * lobe (see the off-node test). Only the four matrix channels are blended,
+ * the albedo and Fresnel ones when asked for; M follows in closed form. */
 static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_theta_o, mf_real alpha,
                              mf_real *albedo, mf_real *fresnel)
 {
-    mf_real ct, a, x, y, fx, fy, v[6];
-    int ix, iy, k;
+    mf_real ct, a, x, y, fx, fy, w00, w10, w01, w11, v0, v1, v3, e;
+    const float *e00, *e10, *e01, *e11;
+    int ix, iy;
     if (!(cos_theta_o == cos_theta_o) || !(alpha == alpha)) {
         /* NaN: no lookup (its conversion to int is undefined) */
         const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
@@ -5450,17 +5527,19 @@ static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_thet
     ix = (int)x; iy = (int)y;
     if (ix > nt - 2) ix = nt - 2;
     if (iy > na - 2) iy = na - 2;
-    if (ix < 0) ix = 0;
-    if (iy < 0) iy = 0;
     fx = mf_clamp(x - (mf_real)ix, MF_R(0.0), MF_R(1.0)); fy = mf_clamp(y - (mf_real)iy, MF_R(0.0), MF_R(1.0));
-    for (k = 0; k < 6; ++k) {
-        const float *e00 = data + 6 * (iy * nt + ix), *e10 = e00 + 6, *e01 = e00 + 6 * nt, *e11 = e01 + 6;
-        v[k] = (MF_R(1.0) - fy) * ((MF_R(1.0) - fx) * (mf_real)e00[k] + fx * (mf_real)e10[k]) +
-               fy * ((MF_R(1.0) - fx) * (mf_real)e01[k] + fx * (mf_real)e11[k]);
-    }
-    if (albedo) *albedo = v[4];
-    if (fresnel) *fresnel = v[5];
-    return mf_ltc_from_inverse(v[0], v[1], v[2], v[3], MF_R(1.0));
+    e00 = data + 6 * (iy * nt + ix); e10 = e00 + 6; e01 = e00 + 6 * nt; e11 = e01 + 6;
+    w00 = (MF_R(1.0) - fx) * (MF_R(1.0) - fy); w10 = fx * (MF_R(1.0) - fy);
+    w01 = (MF_R(1.0) - fx) * fy; w11 = fx * fy;
+    if (albedo) *albedo = w00 * (mf_real)e00[4] + w10 * (mf_real)e10[4] + w01 * (mf_real)e01[4] + w11 * (mf_real)e11[4];
+    if (fresnel) *fresnel = w00 * (mf_real)e00[5] + w10 * (mf_real)e10[5] + w01 * (mf_real)e01[5] + w11 * (mf_real)e11[5];
+    /* corner weights over the middle entry (positive in fitted tables) */
+    w00 /= (mf_real)e00[2]; w10 /= (mf_real)e10[2]; w01 /= (mf_real)e01[2]; w11 /= (mf_real)e11[2];
+    v0 = w00 * (mf_real)e00[0] + w10 * (mf_real)e10[0] + w01 * (mf_real)e01[0] + w11 * (mf_real)e11[0];
+    v1 = w00 * (mf_real)e00[1] + w10 * (mf_real)e10[1] + w01 * (mf_real)e01[1] + w11 * (mf_real)e11[1];
+    v3 = w00 * (mf_real)e00[3] + w10 * (mf_real)e10[3] + w01 * (mf_real)e01[3] + w11 * (mf_real)e11[3];
+    e = w00 + w10 + w01 + w11;
+    return mf_ltc_from_inverse(v0, v1, MF_R(1.0), v3, e);
 }
 
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
