@@ -394,7 +394,7 @@ MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
 typedef mf_real (*mf_brdf_cos_fn)(mf_vec3 wo, mf_vec3 wi, void *ctx);
 typedef struct mf_ltc_fit_result {
     mf_ltc ltc;          /* the fitted distribution */
-    mf_real inv[4];      /* M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1] (normalized, table form) */
+    mf_real inv[4];      /* M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (normalized, table form) */
     mf_real albedo;      /* integral of f cos */
     mf_real fresnel;     /* integral of f cos (1 - wo.h)^5 */
     mf_real error;       /* the fitted L3 error estimate */
@@ -407,16 +407,36 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
  * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
  * n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
  * sqrt(alpha) (alpha clamped below at MF_LTC_ALPHA_MIN). data holds, per
- * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel. */
+ * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel
+ * with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (middle entry 1: blending
+ * this form between entries keeps the lobe; the form with a last entry of 1
+ * has entries growing like 1 / alpha and bends it between rows). */
 #define MF_LTC_ALPHA_MIN MF_R(1e-3)
 typedef struct mf_ltc_table { int n_theta, n_alpha; float *data; } mf_ltc_table;
 typedef void (*mf_progress_fn)(int done, int total, void *ctx);
 MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
                                    mf_progress_fn progress, void *ctx);
 MFDEF void mf_ltc_table_release(mf_ltc_table *t);
-/* Bilinear lookup (of the normalized M^-1 entries, albedo and fresnel). */
+/* Bilinear lookup of the four M^-1 entries (and of the albedo and Fresnel
+ * columns when asked for); M follows in closed form. */
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
                                  mf_real *albedo, mf_real *fresnel);
+
+/* Export of a table (mf_ltc_table.data, mf_ltc_ggx_table, n_theta x n_alpha
+ * entries of six floats) as the two RGBA half-float (IEEE binary16) textures
+ * of the published shaders: texel (column i = theta index, row j = alpha
+ * index) at [4 (j n_theta + i)], tex1 = (inv0, inv1, inv2, inv3) with
+ * M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (GLSL: mat3(vec3(r, 0, b),
+ * vec3(0, 1, 0), vec3(g, 0, a)) is the same matrix, column-major), tex2 =
+ * (albedo, fresnel, 0, 1). Sampling convention, linear filtering, clamp to
+ * edge: uv = (sqrt(1 - cos theta_o), sqrt(alpha)) (n - 1) / n + 0.5 / n
+ * (per axis), which puts the texel centres on the fitted nodes and equals
+ * mf_ltc_table_lookup. Rounding is to nearest even; magnitudes below 2^-24
+ * flush to 0, above 65504 give the largest finite half. Returns
+ * MF_ERROR_INVALID_ARGUMENT on null pointers or sizes below 2, and
+ * MF_ERROR_INVALID_DATA (textures untouched) when an entry is not finite. */
+MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int n_alpha, unsigned short *tex1,
+                                            unsigned short *tex2);
 
 /* Built-in table (tools/ltc_fit.c): the LTC of the GGX BRDF cos for
  * wo = (sin theta_o, 0, cos theta_o), isotropic alpha in [0, 1] (clamped below
@@ -424,13 +444,9 @@ MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_
  * mf_ltc_ggx_fresnel is the integral of f cos (1 - wo.h)^5 (Schlick split).
  * mf_ltc_ggx_table exposes the raw 64 x 64 x 6 floats for GPU textures: rows
  * sqrt(alpha), columns sqrt(1 - cos theta_o), entries inv0 inv1 inv2 inv3
- * albedo fresnel with M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1]. Float16
- * packing: the LTC does not change when M^-1 is scaled, so divide inv0..inv3
- * and the implicit 1 by the largest of |inv0..inv3| and store those five
- * values (all in [-1, 1]; mf_ltc_from_inverse takes the fifth as e). Only the
- * 15 entries with alpha < 0.01 and theta_o > 85 deg need values below float16's
- * smallest normal (6e-5) for e. Not available in CUDA device code (upload the
- * table instead). Fitted in 185 s (double, one core). */
+ * albedo fresnel with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (the layout
+ * of the published shader textures). Not available in CUDA device code
+ * (upload the table instead). Fitted in about 200 s (double, one core). */
 #ifndef MF_NO_LTC_TABLE
 MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);
@@ -592,7 +608,7 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
     if (!(c.albedo > MF_R(1e-12))) {   /* no lobe: the clamped cosine, zero albedo */
         const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
         out->ltc = mf_ltc_from_matrix9(I9);
-        out->inv[0] = out->inv[2] = MF_R(1.0); out->inv[1] = out->inv[3] = MF_R(0.0);
+        out->inv[0] = out->inv[3] = MF_R(1.0); out->inv[1] = out->inv[2] = MF_R(0.0);
         out->error = MF_R(0.0);
         out->params[0] = out->params[1] = MF_R(1.0); out->params[2] = MF_R(0.0);
         MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp);
@@ -612,8 +628,8 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
     /* normalized inverse, table form (the LTC is invariant to scaling M) */
     {
         const mf_real *iv = out->ltc.Minv;
-        out->inv[0] = iv[0] / iv[8]; out->inv[1] = iv[2] / iv[8];
-        out->inv[2] = iv[4] / iv[8]; out->inv[3] = iv[6] / iv[8];
+        out->inv[0] = iv[0] / iv[4]; out->inv[1] = iv[2] / iv[4];
+        out->inv[2] = iv[6] / iv[4]; out->inv[3] = iv[8] / iv[4];
     }
     MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp);
     return MF_SUCCESS;
@@ -681,18 +697,15 @@ MFDEF void mf_ltc_table_release(mf_ltc_table *t)
     t->n_theta = t->n_alpha = 0;
 }
 
-/* Bilinear lookup in (sqrt(1 - cos theta_o), sqrt(alpha)). Each corner's
- * M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1] is first rescaled to a middle
- * entry of 1 (the LTC does not change): the stored form's entries grow like
- * 1 / alpha, and blending them unscaled between rows of small alpha bends the
- * lobe (see the off-node test). Only the four matrix channels are blended,
- * the albedo and Fresnel ones when asked for; M follows in closed form. */
+/* Bilinear lookup in (sqrt(1 - cos theta_o), sqrt(alpha)) of the four
+ * stored M^-1 entries (middle entry 1); the albedo and Fresnel columns only
+ * when asked for; M in closed form (mf_ltc_from_inverse). */
 static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_theta_o, mf_real alpha,
                              mf_real *albedo, mf_real *fresnel)
 {
-    mf_real ct, a, x, y, fx, fy, w00, w10, w01, w11, v0, v1, v3, e;
+    mf_real ct, a, x, y, fx, fy, w00, w10, w01, w11, v[4];
     const float *e00, *e10, *e01, *e11;
-    int ix, iy;
+    int ix, iy, k;
     if (!(cos_theta_o == cos_theta_o) || !(alpha == alpha)) {
         /* NaN: no lookup (its conversion to int is undefined) */
         const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
@@ -709,15 +722,11 @@ static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_thet
     e00 = data + 6 * (iy * nt + ix); e10 = e00 + 6; e01 = e00 + 6 * nt; e11 = e01 + 6;
     w00 = (MF_R(1.0) - fx) * (MF_R(1.0) - fy); w10 = fx * (MF_R(1.0) - fy);
     w01 = (MF_R(1.0) - fx) * fy; w11 = fx * fy;
+    for (k = 0; k < 4; ++k)
+        v[k] = w00 * (mf_real)e00[k] + w10 * (mf_real)e10[k] + w01 * (mf_real)e01[k] + w11 * (mf_real)e11[k];
     if (albedo) *albedo = w00 * (mf_real)e00[4] + w10 * (mf_real)e10[4] + w01 * (mf_real)e01[4] + w11 * (mf_real)e11[4];
     if (fresnel) *fresnel = w00 * (mf_real)e00[5] + w10 * (mf_real)e10[5] + w01 * (mf_real)e01[5] + w11 * (mf_real)e11[5];
-    /* corner weights over the middle entry (positive in fitted tables) */
-    w00 /= (mf_real)e00[2]; w10 /= (mf_real)e10[2]; w01 /= (mf_real)e01[2]; w11 /= (mf_real)e11[2];
-    v0 = w00 * (mf_real)e00[0] + w10 * (mf_real)e10[0] + w01 * (mf_real)e01[0] + w11 * (mf_real)e11[0];
-    v1 = w00 * (mf_real)e00[1] + w10 * (mf_real)e10[1] + w01 * (mf_real)e01[1] + w11 * (mf_real)e11[1];
-    v3 = w00 * (mf_real)e00[3] + w10 * (mf_real)e10[3] + w01 * (mf_real)e01[3] + w11 * (mf_real)e11[3];
-    e = w00 + w10 + w01 + w11;
-    return mf_ltc_from_inverse(v0, v1, MF_R(1.0), v3, e);
+    return mf_ltc_from_inverse(v[0], v[1], MF_R(1.0), v[2], v[3]);
 }
 
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
@@ -730,6 +739,54 @@ MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_
         return mf_ltc_from_matrix9(I9);
     }
     return mf__ltc_lookup(t->data, t->n_theta, t->n_alpha, cos_theta_o, alpha, albedo, fresnel);
+}
+
+/* float to IEEE binary16, round to nearest even (finite input) */
+static unsigned short mf__half_bits(float f)
+{
+    union { float f; unsigned int u; } v;
+    unsigned int sign, e, m, h;
+    v.f = f;
+    sign = (v.u >> 16) & 0x8000u;
+    e = (v.u >> 23) & 0xffu;
+    m = v.u & 0x7fffffu;
+    if (e >= 143u) return (unsigned short)(sign | 0x7bffu);   /* >= 65536: the largest finite */
+    if (e >= 113u) {                                           /* normal half */
+        h = ((e - 112u) << 10) | (m >> 13);
+        m &= 0x1fffu;
+        if (m > 0x1000u || (m == 0x1000u && (h & 1u))) ++h;   /* may carry into the exponent: still right */
+        if (h > 0x7bffu) h = 0x7bffu;
+        return (unsigned short)(sign | h);
+    }
+    if (e < 102u) return (unsigned short)sign;                 /* below half the smallest subnormal */
+    {   /* subnormal half: value = m' 2^-24 */
+        unsigned int full = m | 0x800000u, shift = 126u - e, rem, half;
+        h = full >> shift;
+        rem = full & ((1u << shift) - 1u);
+        half = 1u << (shift - 1u);
+        if (rem > half || (rem == half && (h & 1u))) ++h;
+        return (unsigned short)(sign | h);
+    }
+}
+
+MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int n_alpha, unsigned short *tex1,
+                                            unsigned short *tex2)
+{
+    size_t i, n;
+    int k;
+    if (!data || !tex1 || !tex2 || n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096)
+        return MF_ERROR_INVALID_ARGUMENT;
+    n = (size_t)n_theta * (size_t)n_alpha;
+    for (i = 0; i < 6 * n; ++i)
+        if (!mf__finite_bits((mf_real)data[i])) return MF_ERROR_INVALID_DATA;
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < 4; ++k) tex1[4 * i + (size_t)k] = mf__half_bits(data[6 * i + (size_t)k]);
+        tex2[4 * i] = mf__half_bits(data[6 * i + 4]);
+        tex2[4 * i + 1] = mf__half_bits(data[6 * i + 5]);
+        tex2[4 * i + 2] = 0;
+        tex2[4 * i + 3] = 0x3c00u;   /* 1.0 */
+    }
+    return MF_SUCCESS;
 }
 
 #ifndef MF_NO_LTC_TABLE
