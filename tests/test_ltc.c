@@ -442,7 +442,8 @@ static mf_vec3 at_angle(mf_vec3 a, double t, mft_rng *r)
  * the edge's length theta: random edges, nearly antipodal ones (pi - theta
  * from 1e-6 to 0.3) and short ones (1e-7 to 1e-2); and the fast edge of this
  * precision against the other precision's on the same (float) vectors.
- * Tolerance 1e-5 (the fit alone is 1.1e-9). */
+ * Tolerance 1e-5 (the rational fit alone is 5.6e-7); with MF_USE_DOUBLE the
+ * integrator uses the exact atan2 edge, held to 1e-8. */
 static void test_fast_edge(mft_rng *r)
 {
     double worst[3] = { 0, 0, 0 }, worst_z = 0, agree = 0;
@@ -479,7 +480,7 @@ static void test_fast_edge(mft_rng *r)
         }
     for (set = 0; set < 3; ++set) {
         snprintf(msg, sizeof msg, "fast LTC edge vs long double, %s edges: worst %.2g of theta", sets[set], worst[set]);
-        MFT_CHECK(worst[set] < MFT_TOL(1e-8, 1e-5), msg);
+        MFT_CHECK(worst[set] < MFT_TOL(1e-6, 1e-5), msg);
         if (mft_verbose) printf("    %s\n", msg);
     }
     snprintf(msg, sizeof msg, "polygon edge (z) vs long double: worst %.2g of theta", worst_z);
