@@ -2653,9 +2653,9 @@ MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, in
     for (base = 0; base < n; base += 16) {
         m = n - base < 16 ? n - base : 16;
         for (k = 0; k < m; ++k) {
-            u[k] = MF__LTC_T(A, p[base + k]);
-            if (!(u[k].z > MF_R(0.0))) goto clip;
-            u[k] = mf__unit_or_zero(u[k]);
+            mf_vec3 w = MF__LTC_T(A, p[base + k]);
+            if (!(w.z > MF_R(0.0))) goto clip;
+            u[k] = mf__unit_or_zero(w);
         }
         if (base == 0) u0 = u[0];
         else s0 += mf__edge_z(prev, u[0]);
