@@ -83,6 +83,48 @@ static mf_real plain_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
     return (MF_SQRT(MF_R(1.0) + a2t2) - MF_R(1.0)) * MF_R(0.5);
 }
 
+/* ---- baseline: a plain implementation of LTC polygon shading as described
+ * by Heitz et al. 2016 (Sec. 3-4): bilinear lookup of the four stored M^-1
+ * entries, transform, Sutherland-Hodgman clipping at the horizon into a
+ * vertex buffer, normalization, and per edge acos(a.b) times the normalized
+ * (a x b).z ---- */
+static mf_real plain_ltc_lookup(const float *tab, int n, mf_real ct, mf_real alpha, mf_real *m)
+{
+    mf_real x = MF_SQRT(MF_R(1.0) - ct) * (mf_real)(n - 1), y = MF_SQRT(alpha) * (mf_real)(n - 1), fx, fy;
+    int ix = (int)x, iy = (int)y, k;
+    if (ix > n - 2) ix = n - 2;
+    if (iy > n - 2) iy = n - 2;
+    fx = x - (mf_real)ix; fy = y - (mf_real)iy;
+    for (k = 0; k < 4; ++k) {
+        const float *e = tab + 6 * (iy * n + ix) + k;
+        m[k] = (1 - fy) * ((1 - fx) * e[0] + fx * e[6]) + fy * ((1 - fx) * e[6 * n] + fx * e[6 * n + 6]);
+    }
+    return m[0];
+}
+static mf_real plain_ltc_polygon(const mf_real *m4, const mf_vec3 *p, int n)
+{
+    mf_vec3 in[16], out[17];
+    int i, k = 0;
+    mf_real sum = MF_R(0.0);
+    for (i = 0; i < n; ++i)   /* M^-1 = [m0 0 m1; 0 1 0; m2 0 m3] */
+        in[i] = mf_vec3_make(m4[0] * p[i].x + m4[1] * p[i].z, p[i].y, m4[2] * p[i].x + m4[3] * p[i].z);
+    for (i = 0; i < n; ++i) {
+        mf_vec3 a = in[i], b = in[(i + 1) % n];
+        if (a.z > 0) out[k++] = a;
+        if ((a.z > 0) != (b.z > 0)) {
+            mf_real t = a.z / (a.z - b.z);
+            out[k++] = mf_vec3_make(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), MF_R(0.0));
+        }
+    }
+    for (i = 0; i < k; ++i) out[i] = mf_normalize(out[i]);
+    for (i = 0; i < k; ++i) {
+        mf_vec3 a = out[i], b = out[(i + 1) % k], c = mf_cross(a, b);
+        mf_real sl = MF_SQRT(mf_dot(c, c));
+        if (sl > MF_R(0.0)) sum += MF_ACOS(mf_clamp(mf_dot(a, b), MF_R(-1.0), MF_R(1.0))) * c.z / sl;
+    }
+    return MF_FABS(sum) * MF_R(0.15915494309189533577);
+}
+
 typedef double (*bench_fn)(const mf_ndf *d);
 
 /* ---- tabulated distributions ---- */
@@ -608,6 +650,77 @@ static void bench_gtr_student(void)
 
 struct bench_kind { const char *name; mf_ndf d; };
 static void bench_core(const struct bench_kind *ks, int ggx_only);
+/* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
+ * against the plain baseline; fitting */
+static void bench_ltc(void)
+{
+    int i, k;
+    /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex
+     * (32-gon minus quad over 28), against the plain baseline above */
+    {
+        mf_vec3 qa[4], qc[4], ng[32];
+        double t0, t1, s = 0.0;
+        int it, reps = 20000, nt = 0, na = 0;
+        mf_ltc l = mf_ltc_ggx(MF_R(0.7), MF_R(0.3));
+        mf_real m4[4];
+        const float *tab = mf_ltc_ggx_table(&nt, &na);
+        double best[10];
+        mf_ltc_fit_result fr;
+        mf_ndf g = mf_ggx(MF_R(0.3), MF_R(0.3));
+        plain_ltc_lookup(tab, nt, MF_R(0.7), MF_R(0.3), m4);
+        qa[0] = mf_vec3_make(-1, -1, 2); qa[1] = mf_vec3_make(-1, 1, 2); qa[2] = mf_vec3_make(1, 1, 2); qa[3] = mf_vec3_make(1, -1, 2);
+        /* a vertical quad beside the lobe, crossing the horizon after M^-1 */
+        qc[0] = mf_vec3_make(-1, 2, -1); qc[1] = mf_vec3_make(-1, 2, 1); qc[2] = mf_vec3_make(1, 2, 1); qc[3] = mf_vec3_make(1, 2, -1);
+        for (k = 0; k < 32; ++k) {
+            double a = -6.283185307179586 * k / 32;
+            ng[k] = mf_vec3_make((mf_real)cos(a), (mf_real)sin(a), MF_R(2.0));
+        }
+        for (k = 0; k < 10; ++k) best[k] = 1e30;
+        for (it = 0; it < 150; ++it) {
+            double t[11];
+            t[0] = now_ns();
+            for (i = 0; i < reps; ++i) { mf_ltc m = mf_ltc_ggx(g_u1[i & (N - 1)], g_u2[i & (N - 1)]); s += (double)(m.Minv[0] + m.Minv[8]); }
+            t[1] = now_ns();
+            for (i = 0; i < reps; ++i) { mf_real mm[4]; plain_ltc_lookup(tab, nt, g_u1[i & (N - 1)], g_u2[i & (N - 1)], mm); s += (double)(mm[0] + mm[3]); }
+            t[2] = now_ns();
+            for (i = 0; i < reps; ++i) { qa[0].x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, qa, 4, 1); }
+            t[3] = now_ns();
+            for (i = 0; i < reps; ++i) { qa[0].x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)plain_ltc_polygon(m4, qa, 4); }
+            t[4] = now_ns();
+            for (i = 0; i < reps; ++i) { qc[0].y = (mf_real)(2.0 + 1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, qc, 4, 1); }
+            t[5] = now_ns();
+            for (i = 0; i < reps; ++i) { qc[0].y = (mf_real)(2.0 + 1e-7 * (i & 7)); s += (double)plain_ltc_polygon(m4, qc, 4); }
+            t[6] = now_ns();
+            for (i = 0; i < reps / 4; ++i) { ng[0].x = (mf_real)(1.0 + 1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, ng, 32, 1); }
+            t[7] = now_ns();
+            for (i = 0; i < reps / 4; ++i) { ng[0].x = (mf_real)(1.0 + 1e-7 * (i & 7)); s += (double)plain_ltc_polygon(m4, ng, 16); }
+            t[8] = now_ns();
+            for (i = 0; i < reps / 4; ++i) { ng[0].x = (mf_real)(1.0 + 1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, ng, 16, 1); }
+            t[9] = now_ns();
+            for (i = 0; i < reps / 4; ++i) { ng[0].x = (mf_real)(1.0 + 1e-7 * (i & 7)); s += (double)plain_ltc_polygon(m4, ng, 4); }
+            t[10] = now_ns();
+            for (k = 0; k < 10; ++k) {
+                double per = (t[k + 1] - t[k]) / (k >= 6 ? reps / 4 : reps);
+                if (per < best[k]) best[k] = per;
+            }
+        }
+        /* best: 0 lookup, 1 plain lookup, 2 quad, 3 plain quad, 4 clipped, 5 plain clipped, 6 ours 32-gon, 7 plain 16-gon, 8 ours 16-gon, 9 plain 4-gon */
+        printf("bench ltc_ggx_table_lookup %.2f ratio=%.3f plain=%.2f\n", best[0], best[0] / best[1], best[1]);
+        printf("bench ltc_quad_integrate %.2f ratio=%.3f plain=%.2f\n", best[2], best[2] / best[3], best[3]);
+        printf("bench ltc_quad_clipped %.2f ratio=%.3f plain=%.2f\n", best[4], best[4] / best[5], best[5]);
+        printf("bench ltc_per_vertex %.2f ratio=%.3f plain=%.2f ngon32=%.1f ngon16=%.1f plain16=%.1f plain4=%.1f\n",
+               (best[6] - best[8]) / 16, (best[6] - best[8]) / 16 / ((best[7] - best[9]) / 12), (best[7] - best[9]) / 12,
+               best[6], best[8], best[7], best[9]);
+        g_sink += s;
+        t0 = now_ns();
+        fr.params[0] = fr.params[1] = MF_R(0.3); fr.params[2] = MF_R(0.0);
+        for (it = 0; it < 16; ++it) mf_ltc_fit(&g, NULL, NULL, MF_R(1.0) - MF_R(0.06) * (mf_real)it, fr.params, &fr);
+        t1 = now_ns();
+        printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
+        g_sink += s + (double)fr.albedo;
+    }
+}
+
 int main(int argc, char **argv)
 {
     struct bench_kind ks[5];
@@ -648,6 +761,10 @@ int main(int argc, char **argv)
         bench_beckmann_vndf();
         return 0;
     }
+    if (argc > 1 && !strcmp(argv[1], "ltc")) {
+        bench_ltc();
+        return 0;
+    }
     if (argc > 1 && !strcmp(argv[1], "ibm")) {
         bench_ibm();
         return 0;
@@ -666,7 +783,7 @@ int main(int argc, char **argv)
  * this part at -O2, -O3 -march=native and in a large translation unit) */
 static void bench_core(const struct bench_kind *ks, int ggx_only)
 {
-    int i, k;
+    int k;
     {
         const mf_ndf *g = &ks[1].d;
         double base, ours, inl, pd, od, pg, og;
@@ -791,37 +908,5 @@ static void bench_core(const struct bench_kind *ks, int ggx_only)
         }
         g_sink += s;
     }
-    /* LTC: quad integration (above the horizon, and crossing it), table lookup, fitting */
-    {
-        mf_vec3 qa[4], qc[4];
-        double t0, t1, s = 0.0;
-        int it, reps = 200000;
-        mf_ltc l = mf_ltc_ggx(MF_R(0.7), MF_R(0.3));
-        mf_ltc_fit_result fr;
-        mf_ndf g = mf_ggx(MF_R(0.3), MF_R(0.3));
-        qa[0] = mf_vec3_make(-1, -1, 2); qa[1] = mf_vec3_make(-1, 1, 2); qa[2] = mf_vec3_make(1, 1, 2); qa[3] = mf_vec3_make(1, -1, 2);
-        /* a vertical quad in front, half below the horizon */
-        qc[0] = mf_vec3_make(2, -1, -1); qc[1] = mf_vec3_make(2, -1, 1); qc[2] = mf_vec3_make(2, 1, 1); qc[3] = mf_vec3_make(2, 1, -1);
-        for (it = 0; it < 3; ++it) {
-            double ta, tc, tl;
-            t0 = now_ns();
-            for (i = 0; i < reps; ++i) { qa[0].x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, qa, 4, 0); }
-            t1 = now_ns(); ta = (t1 - t0) / reps;
-            for (i = 0; i < reps; ++i) { qc[0].y = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_polygon_irradiance(qc, 4, 1); }
-            t0 = now_ns(); tc = (t0 - t1) / reps;
-            for (i = 0; i < reps; ++i) { mf_ltc m = mf_ltc_ggx(g_u1[i & (N - 1)], g_u2[i & (N - 1)]); s += (double)m.det_inv; }
-            t1 = now_ns(); tl = (t1 - t0) / reps;
-            if (it == 2) {
-                printf("bench ltc_quad_integrate %.2f\n", ta);
-                printf("bench polygon_irradiance_quad_clipped %.2f\n", tc);
-                printf("bench ltc_ggx_table_lookup %.2f\n", tl);
-            }
-        }
-        t0 = now_ns();
-        fr.params[0] = fr.params[1] = MF_R(0.3); fr.params[2] = MF_R(0.0);
-        for (it = 0; it < 16; ++it) mf_ltc_fit(&g, NULL, NULL, MF_R(1.0) - MF_R(0.06) * (mf_real)it, fr.params, &fr);
-        t1 = now_ns();
-        printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
-        g_sink += s + (double)fr.albedo;
-    }
+    bench_ltc();   /* LTC lookup, polygons, fitting */
 }

@@ -84,23 +84,28 @@ MF_INLINE mf_ltc mf_ltc_from_matrix(const mf_real M[3][3])
 }
 
 /* The LTC of the usual 4/5-coefficient tables, which store the inverse
- * M^-1 = [a 0 b; 0 c 0; d 0 e] (e = 1 in 4-coefficient tables). */
+ * M^-1 = [a 0 b; 0 c 0; d 0 e] (e = 1 in 4-coefficient tables). Its inverse
+ * in closed form, k = ae - bd: M = [e/k 0 -b/k; 0 1/c 0; -d/k 0 a/k],
+ * |det M^-1| = |c k|; singular (the Hadamard test above), non-finite or
+ * overflowing input gives M = I. */
 MF_INLINE mf_ltc mf_ltc_from_inverse(mf_real a, mf_real b, mf_real c, mf_real d, mf_real e)
 {
-    mf_real inv[3][3], m[9], det;
     mf_ltc l;
-    int i;
-    inv[0][0] = a; inv[0][1] = 0; inv[0][2] = b;
-    inv[1][0] = 0; inv[1][1] = c; inv[1][2] = 0;
-    inv[2][0] = d; inv[2][1] = 0; inv[2][2] = e;
-    for (i = 0; i < 9; ++i) m[i] = inv[i / 3][i % 3];
-    det = mf__mat3_inverse(m, l.M);
-    if (!(MF_FABS(det) > MF_R(0.0))) {
-        const mf_real I[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-        return mf_ltc_from_matrix9(I);
+    mf_real k = a * e - b * d, rk, rc, h = MF_LTC_MIN_DET_REL * MF_LTC_MIN_DET_REL;
+    if (!(k * k > h * (a * a + b * b) * (d * d + e * e)) || !(c * c > MF_R(0.0)) ||
+        !(MF_FABS(k) < MF_BIG) || !(MF_FABS(c * k) < MF_BIG) || !(MF_FABS(c * k) * MF_BIG > MF_R(1.0)) ||
+        !(MF_FABS(a) + MF_FABS(b) + MF_FABS(d) + MF_FABS(e) < MF_BIG)) {
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        return mf_ltc_from_matrix9(I9);
     }
-    for (i = 0; i < 9; ++i) l.Minv[i] = m[i];
-    l.det_inv = MF_FABS(det);
+    rk = MF_R(1.0) / k; rc = MF_R(1.0) / c;
+    l.Minv[0] = a; l.Minv[1] = MF_R(0.0); l.Minv[2] = b;
+    l.Minv[3] = MF_R(0.0); l.Minv[4] = c; l.Minv[5] = MF_R(0.0);
+    l.Minv[6] = d; l.Minv[7] = MF_R(0.0); l.Minv[8] = e;
+    l.M[0] = e * rk; l.M[1] = MF_R(0.0); l.M[2] = -b * rk;
+    l.M[3] = MF_R(0.0); l.M[4] = rc; l.M[5] = MF_R(0.0);
+    l.M[6] = -d * rk; l.M[7] = MF_R(0.0); l.M[8] = a * rk;
+    l.det_inv = MF_FABS(c * k);
     return l;
 }
 
@@ -119,62 +124,181 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
     return mf_normalize(mf__mat3_apply(l->M, mf__sample_cosine(u1, u2)));
 }
 
-/* Integral of the cosine lobe's vector irradiance over the great arc from a to
- * b (unit vectors): (theta / sin theta) (a x b), theta = atan2(|a x b|, a.b),
- * accurate for tiny and for nearly antipodal arcs (no acos, no 1 - x^2). */
-MF_FORCE_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+/* the per-edge and per-vertex helpers must inline into the polygon loops;
+ * the rare ones stay out of line */
+#define MF__LTC_HOT MF_FORCE_INLINE
+#if defined(__CUDACC__)
+#define MF__LTC_RARE static __noinline__ MF_HD
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__LTC_RARE static __attribute__((noinline, cold, unused))
+#else
+#define MF__LTC_RARE MF_INLINE
+#endif
+
+/* theta / sin theta for d = cos theta in [0, 1]: a (2, 2) rational fit,
+ * relative error 5.6e-7 (minimax in the relative error, fitted in long
+ * double; a (3, 3) fit reaches 1.1e-9 at two more multiply-adds). */
+MF__LTC_HOT mf_real mf__theta_sin(mf_real d)
 {
-    mf_vec3 c = mf_cross(a, b);
-    mf_real s = MF_SQRT(mf_dot(c, c)), d = mf_dot(a, b);
+    mf_real p = MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
+    mf_real q = MF_R(1.0) + d * (MF_R(1.2132377142117774) + d * MF_R(0.28940008969878159));
+    return p / q;
+}
+
+/* Integral of the cosine lobe's vector irradiance over the great arc from a to
+ * b (unit vectors): (theta / sin theta) (a x b). a x b is formed as
+ * a x (b - a) for theta <= pi/2 and a x (a + b) beyond, where the
+ * differences are exact, so short and nearly antipodal arcs keep their
+ * relative accuracy; theta / sin theta is the rational fit for theta <= pi/2
+ * and pi / sin theta - (pi - theta) / sin(pi - theta) beyond, with sin theta
+ * = |a x b| (no 1 - d^2). The exact atan2 form is used with MF_USE_DOUBLE or
+ * MF_LTC_EXACT_EDGE. A zero or exactly antipodal arc gives 0. */
+#if defined(MF_USE_DOUBLE) && !defined(MF_LTC_EXACT_EDGE)
+#define MF_LTC_EXACT_EDGE
+#endif
+MF__LTC_HOT mf_vec3 mf__vsub(mf_vec3 a, mf_vec3 b) { return mf_vec3_make(a.x - b.x, a.y - b.y, a.z - b.z); }
+MF_INLINE mf_vec3 mf__edge_vector_fast(mf_vec3 a, mf_vec3 b)
+{
+    mf_real d = mf_dot(a, b), s2, f;
+    mf_vec3 c;
+    if (d >= MF_R(0.0)) return mf_scale(mf_cross(a, mf__vsub(b, a)), mf__theta_sin(d));
+    c = mf_cross(a, mf_add(a, b));
+    s2 = mf_dot(c, c);
+    if (!(s2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    f = MF_SQRT(s2);
+    return mf_scale(c, MF_PI / f - mf__theta_sin(-d));
+}
+MF_INLINE mf_vec3 mf__edge_vector_exact(mf_vec3 a, mf_vec3 b)
+{
+    mf_real d = mf_dot(a, b), s;
+    mf_vec3 c = d >= MF_R(0.0) ? mf_cross(a, mf__vsub(b, a)) : mf_cross(a, mf_add(a, b));
+    s = MF_SQRT(mf_dot(c, c));
     if (!(s > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     return mf_scale(c, MF_ATAN2(s, d) / s);
 }
+/* the z component beyond pi/2 (out of line: rare in small lights) */
+MF__LTC_RARE mf_real mf__edge_z_obtuse(mf_vec3 a, mf_vec3 b, mf_real d)
+{
+    mf_real cx = a.y * (a.z + b.z) - a.z * (a.y + b.y), cy = a.z * (a.x + b.x) - a.x * (a.z + b.z);
+    mf_real cz = a.x * (a.y + b.y) - a.y * (a.x + b.x), s2 = cx * cx + cy * cy + cz * cz;
+    if (!(s2 > MF_R(1e-30))) return MF_R(0.0);
+    return cz * (MF_PI / MF_SQRT(s2) - mf__theta_sin(-d));
+}
+/* its z component only */
+MF__LTC_HOT mf_real mf__edge_z(mf_vec3 a, mf_vec3 b)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    return mf__edge_vector_exact(a, b).z;
+#else
+    mf_real d = a.x * b.x + a.y * b.y + a.z * b.z;
+    if (d >= MF_R(0.0)) return (a.x * (b.y - a.y) - a.y * (b.x - a.x)) * mf__theta_sin(d);
+    return mf__edge_z_obtuse(a, b, d);
+#endif
+}
+MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    return mf__edge_vector_exact(a, b);
+#else
+    return mf__edge_vector_fast(a, b);
+#endif
+}
 
-/* Signed cosine form factor (z component of the vector form factor, over
+#define MF__LTC_T(A, v) ((A) ? mf__mat3_apply((A), (v)) : (v))
+MF__LTC_HOT mf_vec3 mf__unit_or_zero(mf_vec3 v)
+{
+    mf_real l2 = v.x * v.x + v.y * v.y + v.z * v.z, r = l2 > MF_R(0.0) ? MF_R(1.0) / MF_SQRT(l2) : MF_R(0.0);
+    return mf_vec3_make(v.x * r, v.y * r, v.z * r);
+}
+
+/* Signed cosine form factor (z component of the vector form factor, times
  * 2 pi) of the polygon p[0..n-1] transformed by A (NULL: identity), clipped
  * to z >= 0 on the fly: every edge is cut where it crosses the horizon and the
  * exit and entry points are joined along the horizon, so no vertex buffer is
- * needed and any n works. */
-MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
+ * needed and any n works. Each vertex is transformed and normalized once. */
+MF_INLINE mf_real mf__polygon_clipped(const mf_real *A, const mf_vec3 *p, int n)
 {
-    int i, s = -1;
+    int i, j, s = -1;
     mf_real sum = MF_R(0.0);
-    mf_vec3 exit_pt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), a, b;
-    if (!p || n < 3) return MF_R(0.0);
+    mf_vec3 exit_pt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), a, an, b, bn, first, first_n;
     for (i = 0; i < n; ++i) {
         a = A ? mf__mat3_apply(A, p[i]) : p[i];
         if (a.z > MF_R(0.0)) { s = i; break; }
     }
     if (s < 0) return MF_R(0.0);   /* entirely below the horizon */
-    a = A ? mf__mat3_apply(A, p[s]) : p[s];
-    for (i = 1; i <= n; ++i) {
-        int above_a = a.z > MF_R(0.0), above_b;
-        b = A ? mf__mat3_apply(A, p[(s + i) % n]) : p[(s + i) % n];
-        above_b = b.z > MF_R(0.0);
-        if (above_a && above_b) {
-            sum += mf__edge_vector(mf_normalize(a), mf_normalize(b)).z;
-        } else if (above_a || above_b) {
-            mf_real t = a.z / (a.z - b.z);
-            mf_vec3 x = mf_add(a, mf_scale(mf_add(b, mf_scale(a, MF_R(-1.0))), t));
-            x.z = MF_R(0.0);
-            x = mf_normalize(x);
-            if (above_a) {
-                sum += mf__edge_vector(mf_normalize(a), x).z;
-                exit_pt = x;
-            } else {
-                sum += mf__edge_vector(exit_pt, x).z;     /* along the horizon */
-                sum += mf__edge_vector(x, mf_normalize(b)).z;
-            }
+    first = a;
+    first_n = an = mf__unit_or_zero(a);
+    for (i = 1, j = s; i <= n; ++i) {
+        if (++j == n) j = 0;
+        if (i == n) { b = first; bn = first_n; }
+        else {
+            b = A ? mf__mat3_apply(A, p[j]) : p[j];
+            bn = b.z > MF_R(0.0) ? mf__unit_or_zero(b) : b;
         }
-        a = b;
+        if (a.z > MF_R(0.0)) {
+            if (b.z > MF_R(0.0)) sum += mf__edge_z(an, bn);
+            else {   /* leaves: a.z b - b.z a is on the segment and on the horizon */
+                mf_vec3 x = mf__vsub(mf_scale(b, a.z), mf_scale(a, b.z));
+                x.z = MF_R(0.0);
+                x = mf__unit_or_zero(x);
+                sum += mf__edge_z(an, x);
+                exit_pt = x;
+            }
+        } else if (b.z > MF_R(0.0)) {   /* enters: along the horizon, then up */
+            mf_vec3 x = mf__vsub(mf_scale(a, b.z), mf_scale(b, a.z));
+            x.z = MF_R(0.0);
+            x = mf__unit_or_zero(x);
+            sum += mf__edge_z(exit_pt, x) + mf__edge_z(x, bn);
+        }
+        a = b; an = bn;
     }
-    return sum * MF_R(0.15915494309189533577);   /* 1 / (2 pi) */
+    return sum;
+}
+
+/* The same over 2 pi. Polygons above the horizon take a faster path: quads
+ * straight-line, other polygons in blocks of 16 vertices (transform and
+ * normalize into a buffer, then the edges); the first vertex below the
+ * horizon hands over to the clipping loop. */
+MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
+{
+    mf_vec3 u[16], u0 = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), prev = u0;
+    mf_real s0 = MF_R(0.0), s1 = MF_R(0.0);
+    int base, k, m;
+    if (!p || n < 3) return MF_R(0.0);
+    if (n == 4) {
+        mf_vec3 b0 = MF__LTC_T(A, p[0]), b1 = MF__LTC_T(A, p[1]), b2 = MF__LTC_T(A, p[2]), b3 = MF__LTC_T(A, p[3]);
+        if (!(b0.z > MF_R(0.0) && b1.z > MF_R(0.0) && b2.z > MF_R(0.0) && b3.z > MF_R(0.0))) {
+            u[0] = b0; u[1] = b1; u[2] = b2; u[3] = b3;   /* clip the transformed quad */
+            return mf__polygon_clipped((const mf_real *)0, u, 4) * MF_R(0.15915494309189533577);
+        }
+        b0 = mf__unit_or_zero(b0); b1 = mf__unit_or_zero(b1); b2 = mf__unit_or_zero(b2); b3 = mf__unit_or_zero(b3);
+        s0 = mf__edge_z(b0, b1) + mf__edge_z(b1, b2);
+        s1 = mf__edge_z(b2, b3) + mf__edge_z(b3, b0);
+        return (s0 + s1) * MF_R(0.15915494309189533577);   /* 1 / (2 pi) */
+    }
+    for (base = 0; base < n; base += 16) {
+        m = n - base < 16 ? n - base : 16;
+        for (k = 0; k < m; ++k) {
+            mf_vec3 w = MF__LTC_T(A, p[base + k]);
+            if (!(w.z > MF_R(0.0))) goto clip;
+            u[k] = mf__unit_or_zero(w);
+        }
+        if (base == 0) u0 = u[0];
+        else s0 += mf__edge_z(prev, u[0]);
+        for (k = 0; k + 1 < m; ++k) s1 += mf__edge_z(u[k], u[k + 1]);
+        prev = u[m - 1];
+    }
+    s0 += mf__edge_z(prev, u0);
+    return (s0 + s1) * MF_R(0.15915494309189533577);
+clip:
+    return mf__polygon_clipped(A, p, n) * MF_R(0.15915494309189533577);
 }
 
 MF_INLINE mf_real mf__sided(mf_real ff, int two_sided)
 {
     /* counterclockwise seen from the shading point is the front */
     ff = -ff;
+    if (!(ff == ff)) return MF_R(0.0);
     if (two_sided) return MF_FABS(ff);
     return mf_max(ff, MF_R(0.0));
 }
@@ -264,7 +388,7 @@ MF_INLINE mf_real mf_ltc_combined_alpha(mf_real alpha_micro, mf_real alpha_meso)
 typedef mf_real (*mf_brdf_cos_fn)(mf_vec3 wo, mf_vec3 wi, void *ctx);
 typedef struct mf_ltc_fit_result {
     mf_ltc ltc;          /* the fitted distribution */
-    mf_real inv[4];      /* M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1] (normalized, table form) */
+    mf_real inv[4];      /* M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (normalized, table form) */
     mf_real albedo;      /* integral of f cos */
     mf_real fresnel;     /* integral of f cos (1 - wo.h)^5 */
     mf_real error;       /* the fitted L3 error estimate */
@@ -277,16 +401,36 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
  * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
  * n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
  * sqrt(alpha) (alpha clamped below at MF_LTC_ALPHA_MIN). data holds, per
- * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel. */
+ * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel
+ * with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (middle entry 1: blending
+ * this form between entries keeps the lobe; the form with a last entry of 1
+ * has entries growing like 1 / alpha and bends it between rows). */
 #define MF_LTC_ALPHA_MIN MF_R(1e-3)
 typedef struct mf_ltc_table { int n_theta, n_alpha; float *data; } mf_ltc_table;
 typedef void (*mf_progress_fn)(int done, int total, void *ctx);
 MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
                                    mf_progress_fn progress, void *ctx);
 MFDEF void mf_ltc_table_release(mf_ltc_table *t);
-/* Bilinear lookup (of the normalized M^-1 entries, albedo and fresnel). */
+/* Bilinear lookup of the four M^-1 entries (and of the albedo and Fresnel
+ * columns when asked for); M follows in closed form. */
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
                                  mf_real *albedo, mf_real *fresnel);
+
+/* Export of a table (mf_ltc_table.data, mf_ltc_ggx_table, n_theta x n_alpha
+ * entries of six floats) as the two RGBA half-float (IEEE binary16) textures
+ * of the published shaders: texel (column i = theta index, row j = alpha
+ * index) at [4 (j n_theta + i)], tex1 = (inv0, inv1, inv2, inv3) with
+ * M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (GLSL: mat3(vec3(r, 0, b),
+ * vec3(0, 1, 0), vec3(g, 0, a)) is the same matrix, column-major), tex2 =
+ * (albedo, fresnel, 0, 1). Sampling convention, linear filtering, clamp to
+ * edge: uv = (sqrt(1 - cos theta_o), sqrt(alpha)) (n - 1) / n + 0.5 / n
+ * (per axis), which puts the texel centres on the fitted nodes and equals
+ * mf_ltc_table_lookup. Rounding is to nearest even; magnitudes below 2^-24
+ * flush to 0, above 65504 give the largest finite half. Returns
+ * MF_ERROR_INVALID_ARGUMENT on null pointers or sizes below 2, and
+ * MF_ERROR_INVALID_DATA (textures untouched) when an entry is not finite. */
+MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int n_alpha, unsigned short *tex1,
+                                            unsigned short *tex2);
 
 /* Built-in table (tools/ltc_fit.c): the LTC of the GGX BRDF cos for
  * wo = (sin theta_o, 0, cos theta_o), isotropic alpha in [0, 1] (clamped below
@@ -294,13 +438,9 @@ MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_
  * mf_ltc_ggx_fresnel is the integral of f cos (1 - wo.h)^5 (Schlick split).
  * mf_ltc_ggx_table exposes the raw 64 x 64 x 6 floats for GPU textures: rows
  * sqrt(alpha), columns sqrt(1 - cos theta_o), entries inv0 inv1 inv2 inv3
- * albedo fresnel with M^-1 = [inv0 0 inv1; 0 inv2 0; inv3 0 1]. Float16
- * packing: the LTC does not change when M^-1 is scaled, so divide inv0..inv3
- * and the implicit 1 by the largest of |inv0..inv3| and store those five
- * values (all in [-1, 1]; mf_ltc_from_inverse takes the fifth as e). Only the
- * 15 entries with alpha < 0.01 and theta_o > 85 deg need values below float16's
- * smallest normal (6e-5) for e. Not available in CUDA device code (upload the
- * table instead). Fitted in 185 s (double, one core). */
+ * albedo fresnel with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (the layout
+ * of the published shader textures). Not available in CUDA device code
+ * (upload the table instead). Fitted in about 200 s (double, one core). */
 #ifndef MF_NO_LTC_TABLE
 MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);
@@ -463,7 +603,7 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
     if (!(c.albedo > MF_R(1e-12))) {   /* no lobe: the clamped cosine, zero albedo */
         const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
         out->ltc = mf_ltc_from_matrix9(I9);
-        out->inv[0] = out->inv[2] = MF_R(1.0); out->inv[1] = out->inv[3] = MF_R(0.0);
+        out->inv[0] = out->inv[3] = MF_R(1.0); out->inv[1] = out->inv[2] = MF_R(0.0);
         out->error = MF_R(0.0);
         out->params[0] = out->params[1] = MF_R(1.0); out->params[2] = MF_R(0.0);
         MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp);
@@ -483,8 +623,8 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
     /* normalized inverse, table form (the LTC is invariant to scaling M) */
     {
         const mf_real *iv = out->ltc.Minv;
-        out->inv[0] = iv[0] / iv[8]; out->inv[1] = iv[2] / iv[8];
-        out->inv[2] = iv[4] / iv[8]; out->inv[3] = iv[6] / iv[8];
+        out->inv[0] = iv[0] / iv[4]; out->inv[1] = iv[2] / iv[4];
+        out->inv[2] = iv[6] / iv[4]; out->inv[3] = iv[8] / iv[4];
     }
     MF_FREE(c.bw); MF_FREE(c.bf); MF_FREE(c.bp);
     return MF_SUCCESS;
@@ -552,10 +692,14 @@ MFDEF void mf_ltc_table_release(mf_ltc_table *t)
     t->n_theta = t->n_alpha = 0;
 }
 
+/* Bilinear lookup in (sqrt(1 - cos theta_o), sqrt(alpha)) of the four
+ * stored M^-1 entries (middle entry 1); the albedo and Fresnel columns only
+ * when asked for; M in closed form (mf_ltc_from_inverse). */
 static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_theta_o, mf_real alpha,
                              mf_real *albedo, mf_real *fresnel)
 {
-    mf_real ct, a, x, y, fx, fy, v[6];
+    mf_real ct, a, x, y, fx, fy, w00, w10, w01, w11, v[4];
+    const float *e00, *e10, *e01, *e11;
     int ix, iy, k;
     if (!(cos_theta_o == cos_theta_o) || !(alpha == alpha)) {
         /* NaN: no lookup (its conversion to int is undefined) */
@@ -569,17 +713,15 @@ static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_thet
     ix = (int)x; iy = (int)y;
     if (ix > nt - 2) ix = nt - 2;
     if (iy > na - 2) iy = na - 2;
-    if (ix < 0) ix = 0;
-    if (iy < 0) iy = 0;
     fx = mf_clamp(x - (mf_real)ix, MF_R(0.0), MF_R(1.0)); fy = mf_clamp(y - (mf_real)iy, MF_R(0.0), MF_R(1.0));
-    for (k = 0; k < 6; ++k) {
-        const float *e00 = data + 6 * (iy * nt + ix), *e10 = e00 + 6, *e01 = e00 + 6 * nt, *e11 = e01 + 6;
-        v[k] = (MF_R(1.0) - fy) * ((MF_R(1.0) - fx) * (mf_real)e00[k] + fx * (mf_real)e10[k]) +
-               fy * ((MF_R(1.0) - fx) * (mf_real)e01[k] + fx * (mf_real)e11[k]);
-    }
-    if (albedo) *albedo = v[4];
-    if (fresnel) *fresnel = v[5];
-    return mf_ltc_from_inverse(v[0], v[1], v[2], v[3], MF_R(1.0));
+    e00 = data + 6 * (iy * nt + ix); e10 = e00 + 6; e01 = e00 + 6 * nt; e11 = e01 + 6;
+    w00 = (MF_R(1.0) - fx) * (MF_R(1.0) - fy); w10 = fx * (MF_R(1.0) - fy);
+    w01 = (MF_R(1.0) - fx) * fy; w11 = fx * fy;
+    for (k = 0; k < 4; ++k)
+        v[k] = w00 * (mf_real)e00[k] + w10 * (mf_real)e10[k] + w01 * (mf_real)e01[k] + w11 * (mf_real)e11[k];
+    if (albedo) *albedo = w00 * (mf_real)e00[4] + w10 * (mf_real)e10[4] + w01 * (mf_real)e01[4] + w11 * (mf_real)e11[4];
+    if (fresnel) *fresnel = w00 * (mf_real)e00[5] + w10 * (mf_real)e10[5] + w01 * (mf_real)e01[5] + w11 * (mf_real)e11[5];
+    return mf_ltc_from_inverse(v[0], v[1], MF_R(1.0), v[2], v[3]);
 }
 
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
@@ -592,6 +734,54 @@ MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_
         return mf_ltc_from_matrix9(I9);
     }
     return mf__ltc_lookup(t->data, t->n_theta, t->n_alpha, cos_theta_o, alpha, albedo, fresnel);
+}
+
+/* float to IEEE binary16, round to nearest even (finite input) */
+static unsigned short mf__half_bits(float f)
+{
+    union { float f; unsigned int u; } v;
+    unsigned int sign, e, m, h;
+    v.f = f;
+    sign = (v.u >> 16) & 0x8000u;
+    e = (v.u >> 23) & 0xffu;
+    m = v.u & 0x7fffffu;
+    if (e >= 143u) return (unsigned short)(sign | 0x7bffu);   /* >= 65536: the largest finite */
+    if (e >= 113u) {                                           /* normal half */
+        h = ((e - 112u) << 10) | (m >> 13);
+        m &= 0x1fffu;
+        if (m > 0x1000u || (m == 0x1000u && (h & 1u))) ++h;   /* may carry into the exponent: still right */
+        if (h > 0x7bffu) h = 0x7bffu;
+        return (unsigned short)(sign | h);
+    }
+    if (e < 102u) return (unsigned short)sign;                 /* below half the smallest subnormal */
+    {   /* subnormal half: value = m' 2^-24 */
+        unsigned int full = m | 0x800000u, shift = 126u - e, rem, half;
+        h = full >> shift;
+        rem = full & ((1u << shift) - 1u);
+        half = 1u << (shift - 1u);
+        if (rem > half || (rem == half && (h & 1u))) ++h;
+        return (unsigned short)(sign | h);
+    }
+}
+
+MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int n_alpha, unsigned short *tex1,
+                                            unsigned short *tex2)
+{
+    size_t i, n;
+    int k;
+    if (!data || !tex1 || !tex2 || n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096)
+        return MF_ERROR_INVALID_ARGUMENT;
+    n = (size_t)n_theta * (size_t)n_alpha;
+    for (i = 0; i < 6 * n; ++i)
+        if (!mf__finite_bits((mf_real)data[i])) return MF_ERROR_INVALID_DATA;
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < 4; ++k) tex1[4 * i + (size_t)k] = mf__half_bits(data[6 * i + (size_t)k]);
+        tex2[4 * i] = mf__half_bits(data[6 * i + 4]);
+        tex2[4 * i + 1] = mf__half_bits(data[6 * i + 5]);
+        tex2[4 * i + 2] = 0;
+        tex2[4 * i + 3] = 0x3c00u;   /* 1.0 */
+    }
+    return MF_SUCCESS;
 }
 
 #ifndef MF_NO_LTC_TABLE

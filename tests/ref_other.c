@@ -50,3 +50,10 @@ void ref_sample_D(int kind, double ax, double ay, double g, double u1, double u2
     mf_vec3 m = mf_sample_D(&d, (mf_real)u1, (mf_real)u2);
     wm[0] = (double)m.x; wm[1] = (double)m.y; wm[2] = (double)m.z;
 }
+
+/* the fast LTC edge integral (rational theta / sin theta) in this precision */
+void ref_ltc_edge_fast(const double *a, const double *b, double *out)
+{
+    mf_vec3 e = mf__edge_vector_fast(v3(a), v3(b));
+    out[0] = (double)e.x; out[1] = (double)e.y; out[2] = (double)e.z;
+}

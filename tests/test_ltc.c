@@ -17,6 +17,7 @@
  * degrees, where the LTC lobe spills below the true horizon). */
 #include "mf_test.h"
 #include "quad.h"
+#include "ref_other.h"
 #include <stdlib.h>
 
 static const double PI_D = 3.14159265358979323846;
@@ -239,8 +240,12 @@ static void test_ggx_table_data(void)
     for (j = 0; j < 4; ++j)
         for (i = 0; i < 4; ++i) {
             const float *a = t.data + 6 * (j * 4 + i), *b = s + 6 * (21 * j * 64 + 21 * i);
-            double scale = fabs(b[0]) > fabs(b[2]) ? fabs(b[0]) : fabs(b[2]);
-            for (k = 0; k < 4; ++k) if (fabs(a[k] - b[k]) / scale > wm) wm = fabs(a[k] - b[k]) / scale;
+            double scale = 0.0;
+            for (k = 0; k < 4; ++k) scale = fabs(b[k]) > scale ? fabs(b[k]) : scale;
+            for (k = 0; k < 4; ++k) {
+                if (fabs(a[k] - b[k]) / scale > wm) wm = fabs(a[k] - b[k]) / scale;
+                if (mft_verbose && fabs(a[k] - b[k]) / scale > 1e-3) printf("    refit node %d %d entry %d: %g vs %g\n", j, i, k, a[k], b[k]);
+            }
             for (k = 4; k < 6; ++k) if (fabs(a[k] - b[k]) > wa) wa = fabs(a[k] - b[k]);
         }
     mf_ltc_table_release(&t);
@@ -255,12 +260,18 @@ static void test_ggx_table_data(void)
             const float *e = s + 6 * (j * 64 + i);
             mf_ltc l;
             if (ct < 1e-3 || al < 1e-3) continue;   /* the clamped ends */
-            l = mf_ltc_from_inverse((mf_real)e[0], (mf_real)e[1], (mf_real)e[2], (mf_real)e[3], MF_R(1.0));
+            l = mf_ltc_from_inverse((mf_real)e[0], (mf_real)e[1], MF_R(1.0), (mf_real)e[2], (mf_real)e[3]);
             alb = mf_ltc_ggx_albedo((mf_real)ct, (mf_real)al);
             fr = mf_ltc_ggx_fresnel((mf_real)ct, (mf_real)al);
-            for (k = 0; k < 9; ++k)
-                if (fabs((double)l.Minv[k] - (double)mf_ltc_ggx((mf_real)ct, (mf_real)al).Minv[k]) > wacc)
-                    wacc = fabs((double)l.Minv[k] - (double)mf_ltc_ggx((mf_real)ct, (mf_real)al).Minv[k]);
+            /* M^-1 up to scale (the lookup rescales it): both over their (2,2) entry */
+            {
+                mf_ltc g = mf_ltc_ggx((mf_real)ct, (mf_real)al);
+                for (k = 0; k < 9; ++k) {
+                    double dk = fabs((double)l.Minv[k] / (double)l.Minv[8] - (double)g.Minv[k] / (double)g.Minv[8]);
+                    if (dk / (fabs((double)l.Minv[k] / (double)l.Minv[8]) + 1.0) > wacc)
+                        wacc = dk / (fabs((double)l.Minv[k] / (double)l.Minv[8]) + 1.0);
+                }
+            }
             if (fabs((double)alb - e[4]) > wacc) wacc = fabs((double)alb - e[4]);
             if (fabs((double)fr - e[5]) > wacc) wacc = fabs((double)fr - e[5]);
         }
@@ -333,6 +344,228 @@ static void test_fitter(void)
     MFT_CHECK(t.data == NULL, "table released");
 }
 
+
+
+/* a square of half-size h at unit distance around direction c */
+static void square_at(mf_vec3 *p, mf_vec3 c, double h)
+{
+    mf_vec3 u, v;
+    mf_frame(c, &u, &v);
+    p[0] = mf_add(c, mf_add(mf_scale(u, (mf_real)-h), mf_scale(v, (mf_real)-h)));
+    p[1] = mf_add(c, mf_add(mf_scale(u, (mf_real)-h), mf_scale(v, (mf_real)h)));
+    p[2] = mf_add(c, mf_add(mf_scale(u, (mf_real)h), mf_scale(v, (mf_real)h)));
+    p[3] = mf_add(c, mf_add(mf_scale(u, (mf_real)h), mf_scale(v, (mf_real)-h)));
+}
+
+/* Off-node accuracy of the GGX table between rows of small alpha (0.003 to
+ * 0.04, where the matrix entries grow like 1 / alpha): the integral of the
+ * looked-up LTC over squares around and beside the mirror direction (0.5 to
+ * 4 lobe widths) against that of a direct fit at the same (cos, alpha), and
+ * the same at the nodes. Blending the stored form (middle entry 1) keeps the
+ * off-node error near the on-node one; blending the form with a last entry
+ * of 1 (reimplemented here) is shown for comparison. */
+static void test_off_node(void)
+{
+    const int rows[] = { 3, 5, 7, 9, 11 }, cols[] = { 4, 20, 36, 50 };
+    int n, na, ri, ci, q, half, cnt[2] = { 0, 0 };
+    const float *t = mf_ltc_ggx_table(&n, &na);
+    double sum[2] = { 0, 0 }, mx[2] = { 0, 0 }, sum_old = 0, mx_old = 0;
+    char msg[200];
+    for (half = 0; half < 2; ++half)
+        for (ri = 0; ri < 5; ++ri)
+            for (ci = 0; ci < 4; ++ci) {
+                double v = (rows[ri] + 0.5 * half) / 63.0, tt = (cols[ci] + 0.5 * half) / 63.0, al = v * v, ct = 1 - tt * tt;
+                double st = sqrt(1 - ct * ct);
+                mf_ltc_fit_result fr;
+                mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
+                mf_ltc l = mf_ltc_ggx((mf_real)ct, (mf_real)al), lo;
+                mf_ltc_fit(&d, NULL, NULL, (mf_real)ct, NULL, &fr);
+                {   /* the old blend: entries over the last one, i.e. [a/d3 0 b/d3; 0 1/d3 0; c/d3 0 1] */
+                    int ix = cols[ci], iy = rows[ri], k, c2;
+                    double fx = 0.5 * half, fy = 0.5 * half, w[4], o[5] = { 0, 0, 0, 0, 0 };
+                    const float *e[4];
+                    e[0] = t + 6 * (iy * 64 + ix); e[1] = e[0] + 6; e[2] = e[0] + 6 * 64; e[3] = e[2] + 6;
+                    w[0] = (1 - fx) * (1 - fy); w[1] = fx * (1 - fy); w[2] = (1 - fx) * fy; w[3] = fx * fy;
+                    for (c2 = 0; c2 < 4; ++c2) {
+                        double r3 = 1.0 / e[c2][3];
+                        o[0] += w[c2] * e[c2][0] * r3; o[1] += w[c2] * e[c2][1] * r3;
+                        o[2] += w[c2] * r3; o[3] += w[c2] * e[c2][2] * r3; o[4] += w[c2];
+                    }
+                    lo = mf_ltc_from_inverse((mf_real)o[0], (mf_real)o[1], (mf_real)o[2], (mf_real)o[3], (mf_real)o[4]);
+                    (void)k;
+                }
+                for (q = 0; q < 6; ++q) {
+                    double h = (q % 3 == 0 ? 0.5 : q % 3 == 1 ? 1.5 : 4.0) * al, off = q < 3 ? 0.0 : 1.5 * al, ref, e1;
+                    mf_vec3 p[4];
+                    square_at(p, mf_normalize(mf_vec3_make((mf_real)-st, (mf_real)off, (mf_real)ct)), h);
+                    ref = mf_ltc_integrate(&fr.ltc, p, 4, 1);
+                    if (ref < 1e-3) continue;
+                    e1 = fabs(mf_ltc_integrate(&l, p, 4, 1) - ref) / ref;
+                    sum[half] += e1; cnt[half]++;
+                    if (e1 > mx[half]) mx[half] = e1;
+                    if (half) {
+                        double e0 = fabs(mf_ltc_integrate(&lo, p, 4, 1) - ref) / ref;
+                        sum_old += e0;
+                        if (e0 > mx_old) mx_old = e0;
+                    }
+                }
+            }
+    printf("    GGX table vs direct fits, alpha 0.003-0.04: on-node mean %.4f max %.4f (%d squares); off-node mean %.4f max %.4f"
+           " (blending the last-entry-1 form: mean %.4f max %.4f)\n", sum[0] / cnt[0], mx[0], cnt[0], sum[1] / cnt[1], mx[1],
+           sum_old / cnt[1], mx_old);
+    snprintf(msg, sizeof msg, "off-node LTC lookup vs direct fit: mean %.4f (on-node %.4f), max %.4f", sum[1] / cnt[1], sum[0] / cnt[0], mx[1]);
+    MFT_CHECK(cnt[1] > 60 && sum[1] / cnt[1] < 0.01 && mx[1] < 0.06, msg);
+}
+
+/* The edge integral (theta / sin theta) (a x b) of unit vectors a, b in long
+ * double from the stored (rounded) components: the products of two floats or
+ * doubles lose at most 2^-64 of their size, atan2l takes the angle. */
+static void edge_exact(mf_vec3 a, mf_vec3 b, long double *out)
+{
+    long double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
+    long double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    long double s = sqrtl(cx * cx + cy * cy + cz * cz), d = ax * bx + ay * by + az * bz, th = atan2l(s, d);
+    out[0] = cx * th / s; out[1] = cy * th / s; out[2] = cz * th / s; out[3] = th;
+}
+
+/* a unit vector at angle t from a (unit), towards a random perpendicular */
+static mf_vec3 at_angle(mf_vec3 a, double t, mft_rng *r)
+{
+    mf_vec3 u, v;
+    double p = 2 * PI_D * mft_u01(r);
+    mf_frame(a, &u, &v);
+    return mf_normalize(mf_add(mf_scale(a, (mf_real)cos(t)), mf_add(mf_scale(u, (mf_real)(sin(t) * cos(p))), mf_scale(v, (mf_real)(sin(t) * sin(p))))));
+}
+
+/* The fast edge (rational theta / sin theta, exact differences) and the edge
+ * used by the polygon integrator against the long double edge, relative to
+ * the edge's length theta: random edges, nearly antipodal ones (pi - theta
+ * from 1e-6 to 0.3) and short ones (1e-7 to 1e-2); and the fast edge of this
+ * precision against the other precision's on the same (float) vectors.
+ * Tolerance 1e-5 (the rational fit alone is 5.6e-7); with MF_USE_DOUBLE the
+ * integrator uses the exact atan2 edge, held to 1e-8. */
+static void test_fast_edge(mft_rng *r)
+{
+    double worst[3] = { 0, 0, 0 }, worst_z = 0, agree = 0;
+    const char *sets[3] = { "random", "nearly antipodal", "short" };
+    char msg[200];
+    int set, i;
+    for (set = 0; set < 3; ++set)
+        for (i = 0; i < 20000; ++i) {
+            mf_vec3 a = mft_dir(acos(2 * mft_u01(r) - 1), 2 * PI_D * mft_u01(r)), b, e;
+            long double x[4];
+            double err, ez, t;
+            a = mf_normalize(a);
+            if (set == 0) b = mf_normalize(mft_dir(acos(2 * mft_u01(r) - 1), 2 * PI_D * mft_u01(r)));
+            else if (set == 1) { t = PI_D - exp(log(1e-6) + (log(0.3) - log(1e-6)) * mft_u01(r)); b = at_angle(a, t, r); }
+            else { t = exp(log(1e-7) + (log(1e-2) - log(1e-7)) * mft_u01(r)); b = at_angle(a, t, r); }
+            edge_exact(a, b, x);
+            if (!(x[3] > 0) || !(x[3] < 3.1415926535)) continue;   /* rounded onto the same or the opposite point */
+            e = mf__edge_vector_fast(a, b);
+            err = sqrt((double)((e.x - x[0]) * (e.x - x[0]) + (e.y - x[1]) * (e.y - x[1]) + (e.z - x[2]) * (e.z - x[2]))) / (double)x[3];
+            ez = fabs((double)mf__edge_z(a, b) - (double)x[2]) / (double)x[3];
+            if (err > worst[set]) worst[set] = err;
+            if (ez > worst_z) worst_z = ez;
+            {   /* the same float-representable input in both precisions */
+                volatile float fa[6];
+                double da[3], db[3], o[3], g;
+                fa[0] = (float)a.x; fa[1] = (float)a.y; fa[2] = (float)a.z; fa[3] = (float)b.x; fa[4] = (float)b.y; fa[5] = (float)b.z;
+                da[0] = fa[0]; da[1] = fa[1]; da[2] = fa[2]; db[0] = fa[3]; db[1] = fa[4]; db[2] = fa[5];
+                mf_vec3 f = mf__edge_vector_fast(mf_vec3_make((mf_real)da[0], (mf_real)da[1], (mf_real)da[2]),
+                                                 mf_vec3_make((mf_real)db[0], (mf_real)db[1], (mf_real)db[2]));
+                ref_ltc_edge_fast(da, db, o);
+                g = sqrt((o[0] - f.x) * (o[0] - f.x) + (o[1] - f.y) * (o[1] - f.y) + (o[2] - f.z) * (o[2] - f.z)) / (double)x[3];
+                if (g > agree) agree = g;
+            }
+        }
+    for (set = 0; set < 3; ++set) {
+        snprintf(msg, sizeof msg, "fast LTC edge vs long double, %s edges: worst %.2g of theta", sets[set], worst[set]);
+        MFT_CHECK(worst[set] < MFT_TOL(1e-6, 1e-5), msg);
+        if (mft_verbose) printf("    %s\n", msg);
+    }
+    snprintf(msg, sizeof msg, "polygon edge (z) vs long double: worst %.2g of theta", worst_z);
+    MFT_CHECK(worst_z < MFT_TOL(1e-8, 1e-5), msg);
+    snprintf(msg, sizeof msg, "fast LTC edge: float and double agree (worst %.2g of theta)", agree);
+    MFT_CHECK(agree < 1e-5, msg);
+    printf("    fast edge vs long double: random %.2g, nearly antipodal %.2g, short %.2g; polygon edge %.2g; float vs double %.2g\n",
+           worst[0], worst[1], worst[2], worst_z, agree);
+}
+
+
+/* binary16 bits to double (independent of the encoder) */
+static double half_value(unsigned short h)
+{
+    int e = (h >> 10) & 31, m = h & 1023;
+    double v = e == 0 ? ldexp((double)m, -24) : ldexp(1.0 + m / 1024.0, e - 15);
+    return (h & 0x8000) ? -v : v;
+}
+
+/* The two-RGBA half-float export: every value within half precision of the
+ * table, the documented sampling convention (bilinear with texel centres on
+ * the nodes) reproducing mf_ltc_ggx on squares, known encodings, bad input. */
+static void test_export(mft_rng *r)
+{
+    static unsigned short t1[4 * 64 * 64], t2[4 * 64 * 64];
+    int n, na, i, k, bad = 0;
+    const float *t = mf_ltc_ggx_table(&n, &na);
+    double worst = 0, wq = 0;
+    char msg[200];
+    MFT_CHECK(mf_ltc_table_export_rgba16f(t, n, na, t1, t2) == MF_SUCCESS, "export the GGX table as two RGBA16F textures");
+    for (i = 0; i < n * na; ++i) {
+        for (k = 0; k < 6; ++k) {
+            double h = k < 4 ? half_value(t1[4 * i + k]) : half_value(t2[4 * i + k - 4]), want = t[6 * i + k];
+            /* relative 2^-11 for normal halves, absolute 2^-25 below 2^-14 */
+            double err = fabs(h - want) / (fabs(want) > 6.103515625e-05 ? fabs(want) : 6.103515625e-05);
+            if (err > worst) worst = err;
+        }
+        if (t2[4 * i + 2] != 0 || t2[4 * i + 3] != 0x3c00) ++bad;
+    }
+    snprintf(msg, sizeof msg, "exported halves within half precision of the table (worst %.2g relative, B = 0, A = 1 in %d texels)", worst, n * na - bad);
+    MFT_CHECK(worst <= 1.0 / 2048 && bad == 0, msg);
+    /* the documented convention: u = sqrt(1 - cos) (n - 1) / n + 0.5 / n, texel centres at (i + 0.5) / n */
+    for (i = 0; i < 200; ++i) {
+        double ct = 0.02 + 0.98 * mft_u01(r), al = 0.02 + 0.98 * mft_u01(r), st = sqrt(1 - ct * ct);
+        double u = sqrt(1 - ct) * (n - 1.0) / n + 0.5 / n, v = sqrt(al) * (na - 1.0) / na + 0.5 / na;
+        double x = u * n - 0.5, y = v * na - 0.5, fx, fy, m[4];
+        int ix = (int)floor(x), iy = (int)floor(y), ix1, iy1, c;
+        mf_vec3 p[4];
+        mf_ltc a, b;
+        fx = x - ix; fy = y - iy; ix1 = ix + 1 < n ? ix + 1 : n - 1; iy1 = iy + 1 < na ? iy + 1 : na - 1;
+        for (c = 0; c < 4; ++c)
+            m[c] = (1 - fy) * ((1 - fx) * half_value(t1[4 * (iy * n + ix) + c]) + fx * half_value(t1[4 * (iy * n + ix1) + c])) +
+                   fy * ((1 - fx) * half_value(t1[4 * (iy1 * n + ix) + c]) + fx * half_value(t1[4 * (iy1 * n + ix1) + c]));
+        a = mf_ltc_from_inverse((mf_real)m[0], (mf_real)m[1], MF_R(1.0), (mf_real)m[2], (mf_real)m[3]);
+        b = mf_ltc_ggx((mf_real)ct, (mf_real)al);
+        square_at(p, mf_normalize(mf_vec3_make((mf_real)(-st + 0.3 * mft_u01(r)), (mf_real)(0.3 * mft_u01(r)), (mf_real)ct)), 0.2 + al);
+        {
+            double ia = mf_ltc_integrate(&a, p, 4, 1), ib = mf_ltc_integrate(&b, p, 4, 1);
+            if (ib > 1e-3 && fabs(ia - ib) / ib > wq) wq = fabs(ia - ib) / ib;
+        }
+    }
+    snprintf(msg, sizeof msg, "texture sampling convention reproduces mf_ltc_ggx on squares (worst %.2g relative)", wq);
+    MFT_CHECK(wq < 5e-3, msg);
+    {   /* known encodings, through a 2 x 2 table */
+        float d[24];
+        unsigned short a1[16], a2[16];
+        const float in[8] = { 1.0f, 65504.0f, 1e6f, 5.9604645e-8f, 1.4e-8f, -2.0f, 0.1f, 3.0517578e-5f };
+        const unsigned short want[8] = { 0x3c00, 0x7bff, 0x7bff, 0x0001, 0x0000, 0xc000, 0x2e66, 0x0200 };
+        int ok = 1;
+        for (i = 0; i < 24; ++i) d[i] = 0.5f;
+        for (i = 0; i < 8; ++i) d[6 * (i / 4) + i % 4] = in[i];
+        MFT_CHECK(mf_ltc_table_export_rgba16f(d, 2, 2, a1, a2) == MF_SUCCESS, "export a 2 x 2 table");
+        for (i = 0; i < 8; ++i) ok = ok && a1[4 * (i / 4) + i % 4] == want[i];
+        MFT_CHECK(ok && a2[0] == 0x3800, "half encodings: 1, 65504, overflow, 2^-24, underflow, -2, 0.1, subnormal 2^-15, 0.5");
+        {
+            volatile double zero = 0.0;
+            d[7] = (float)(1.0 / zero);   /* inf */
+        }
+        MFT_CHECK(mf_ltc_table_export_rgba16f(d, 2, 2, a1, a2) == MF_ERROR_INVALID_DATA, "export rejects a non-finite entry");
+        MFT_CHECK(mf_ltc_table_export_rgba16f(NULL, 2, 2, a1, a2) == MF_ERROR_INVALID_ARGUMENT &&
+                  mf_ltc_table_export_rgba16f(d, 1, 2, a1, a2) == MF_ERROR_INVALID_ARGUMENT &&
+                  mf_ltc_table_export_rgba16f(d, 2, 2, NULL, a2) == MF_ERROR_INVALID_ARGUMENT, "export rejects bad arguments");
+    }
+}
+
 void test_ltc(void)
 {
     mft_rng r;
@@ -340,6 +573,9 @@ void test_ltc(void)
     char msg[160];
     test_ggx_table_data();
     mft_seed(&r, 31);
+    test_fast_edge(&r);
+    test_off_node();
+    test_export(&r);
     test_fitter();
     test_ggx_table(&r);
     /* normalization */

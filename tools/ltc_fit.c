@@ -32,7 +32,7 @@ static void print_module_head(int n)
            "/* ======================================================================== */\n"
            "/* %d x %d LTC fits of the GGX BRDF times cos(theta_i) (mf_ltc_table_build,\n"
            " * fitted in double), rows sqrt(alpha), columns sqrt(1 - cos theta_o), six\n"
-           " * floats per entry: the inverse-matrix entries inv0..inv3 (mf_ltc_from_inverse),\n"
+           " * floats per entry: inv0..inv3 with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3],\n"
            " * the albedo and the Fresnel column. Read through mf_ltc_ggx, mf_ltc_ggx_albedo,\n"
            " * mf_ltc_ggx_fresnel and mf_ltc_ggx_table (13_ltc.h). */\n"
            "/* @impl */\n"
@@ -70,7 +70,7 @@ int main(int argc, char **argv)
     fprintf(stderr, "\nfitted %d x %d in %.1f s\n", n, n, (double)(clock() - t0) / CLOCKS_PER_SEC);
     for (k = 0; k < 6; ++k) { lo[k] = 1e30; hi[k] = -1e30; }
     if (module) print_module_head(n);
-    else printf("/* %d x %d entries [sqrt(alpha)][sqrt(1 - cos theta)]: inv0 inv1 inv2 inv3 albedo fresnel */\n", n, n);
+    else printf("/* %d x %d entries [sqrt(alpha)][sqrt(1 - cos theta)]: inv0 inv1 inv2 inv3 albedo fresnel, M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] */\n", n, n);
     for (i = 0; i < n * n; ++i) {
         for (k = 0; k < 6; ++k) {
             double v = t.data[6 * i + k];
