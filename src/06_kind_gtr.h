@@ -130,7 +130,7 @@ MF_INLINE mf_real mf__gtr_lambda4(mf_real a2, mf_real t2)
  * 35x for gamma in (2, 4) (the gamma-4 components are dearer); building the
  * rule makes mf_gtr at non-integer gamma cost 5-15 us (Golub-Welsch; integer
  * gamma costs nothing), and the rule makes mf_ndf 544 bytes in double (192
- * before), 288 in float (100). tan^2 is capped at 1e16
+ * before), 288 in float (104). tan^2 is capped at 1e16
  * (Lambda ~ 1e8, G1 ~ 1e-8) so float never overflows. */
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
 {
@@ -145,13 +145,13 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
         }
         return MF_R(0.5) * sum;
     }
-    if (p->mix == 2) {
+    if (p->mix == 2) {   /* C.11 cancels to -1e-22 in float at small a^2 t^2 */
         for (j = 0; j < p->nq; ++j) sum += p->qw[j] * mf__gtr_lambda4(p->qb[j], t2);
-        return sum;
+        return mf_max(sum, MF_R(0.0));
     } else {
         mf_real lam[5];
         mf__gtr_lambda_nodes(d->ax * d->ax, p->L, t2, lam);
-        return lam[(int)p->gamma];
+        return mf_max(lam[(int)p->gamma], MF_R(0.0));   /* C.11 can round to -4e-23 in float */
     }
 }
 

@@ -691,6 +691,19 @@ static void defects_vndf(void)
         if (!(wi.z > 0)) ++none;
     }
     MFT_CHECK(bad == 0 && none <= 10, "7: GTR(0.0015, 4) at 88 deg: every visible sample valid, BRDF samples above the horizon");
+    {   /* the gamma-4 mixture of the exact GTR Lambda cancelled below 0 in float
+         * near the normal (fuzz: Lambda = -2.7e-22) */
+        int neg = 0, ia, ig, it;
+        for (ia = 0; ia < 9; ++ia)
+            for (ig = 0; ig < 9; ++ig) {
+                mf_ndf g = mf_gtr((mf_real)pow(10.0, -4.0 + 0.5 * ia), (mf_real)(2.05 + 0.2 * ig));
+                for (it = 0; it < 12; ++it) {
+                    mf_real l = mf_lambda(&g, mft_dir(pow(10.0, -6.0 + 0.5 * it), 0.3));
+                    if (!(l >= 0)) ++neg;
+                }
+            }
+        MFT_CHECK(neg == 0, "GTR Lambda >= 0 at gamma in (2, 4) near the normal");
+    }
     printf("    7: GTR(0.0015, 4) 88 deg: %d invalid visible samples, %d of %d BRDF samples below the horizon\n", bad, none, n);
     {
         /* 8: independent fraction of visible normals whose reflection stays up:
