@@ -97,7 +97,7 @@ static mf_real plain_ltc_lookup(const float *tab, int n, mf_real ct, mf_real alp
     fx = x - (mf_real)ix; fy = y - (mf_real)iy;
     for (k = 0; k < 4; ++k) {
         const float *e = tab + 6 * (iy * n + ix) + k;
-        m[k] = (1 - fy) * ((1 - fx) * e[0] + fx * e[6]) + fy * ((1 - fx) * e[6 * n] + fx * e[6 * n + 6]);
+        m[k] = (1 - fy) * ((1 - fx) * (mf_real)e[0] + fx * (mf_real)e[6]) + fy * ((1 - fx) * (mf_real)e[6 * n] + fx * (mf_real)e[6 * n + 6]);
     }
     return m[0];
 }
