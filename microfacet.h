@@ -206,6 +206,16 @@
  *          bound, MF_MICROSURFACE_MAX_ITERATIONS; bit-level checks that hold
  *          under -ffast-math. Energy compensation for conductors and
  *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
+ *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
+ *          mixture, built by mf_gtr: mf_ndf is larger, 288 bytes in float);
+ *          no lost samples at grazing views for any kind. LTC: rational
+ *          edge, one normalization per vertex; tables store M^-1 with a unit
+ *          middle entry (the published texture layout: the raw data of
+ *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed
+ *          meaning), mf_ltc_table_export_rgba16f. MF_FORCE_INLINE on the hot
+ *          paths; Beckmann visible normals in closed form at normal
+ *          incidence; faster IBM queries; MF_FAST_MATH; solver iteration
+ *          caps reported to tests (MF__SOLVER_DONE).
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
