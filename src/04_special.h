@@ -203,6 +203,12 @@ MF_INLINE mf_real mf__gl_w(int i)
     return w[i];
 }
 
+/* node i of the 8-point rule in panel p of `panels` equal panels of [0, 1] */
+MF_INLINE mf_real mf__gl_node01(int p, int i, int panels)
+{
+    return ((mf_real)p + MF_R(0.5) + MF_R(0.5) * mf__gl_xi(i)) / (mf_real)panels;
+}
+
 /* 4-point Gauss-Legendre rule on [-1, 1], weights normalized to sum 1. */
 MF_INLINE mf_real mf__gl4_xi(int i)
 {

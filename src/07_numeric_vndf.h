@@ -100,7 +100,7 @@ MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv
         for (k = 0; k < MF__ISO_PANELS; ++k) {
             mf_real sum = MF_R(0.0);
             for (i = 0; i < MF__GL_N; ++i) {
-                mf_real s = ((mf_real)k + MF_R(0.5) + MF_R(0.5) * mf__gl_xi(i)) / (mf_real)MF__ISO_PANELS;
+                mf_real s = mf__gl_node01(k, i, MF__ISO_PANELS);
                 hv[k][i] = mf__iso_vis_h(&v, s, &t, &q);
                 sum += mf__gl_w(i) * hv[k][i];
             }

@@ -135,7 +135,7 @@ MF_INLINE mf_real mf__fresnel_average(mf_real eta, mf_real k, int conductor)
         if (!(len > MF_R(0.0))) continue;
         for (p = 0; p < 8; ++p)
             for (i = 0; i < 8; ++i) {
-                mf_real t = ((mf_real)p + MF_R(0.5) + MF_R(0.5) * mf__gl_xi(i)) / MF_R(8.0);
+                mf_real t = mf__gl_node01(p, i, 8);
                 mf_real mu = side ? mu_c + len * t * t : mu_c - len * t * t;
                 mf_real f = conductor ? mf_fresnel_conductor(mu, eta, k) : mf_fresnel_dielectric(mu, eta);
                 /* 2 F mu dmu, dmu = 2 len t dt, panel width 1/8 (weights sum to 1) */

@@ -146,10 +146,10 @@ MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
     h = 1.0 / (double)panels;
     for (p1 = 0; p1 < panels; ++p1)
         for (i = 0; i < 8; ++i) {
-            mf_real u1 = (mf_real)(h * ((double)p1 + 0.5 + 0.5 * (double)mf__gl_xi(i)));
+            mf_real u1 = mf__gl_node01(p1, i, panels);
             for (p2 = 0; p2 < panels; ++p2)
                 for (j = 0; j < 8; ++j) {
-                    mf_real u2 = (mf_real)(h * ((double)p2 + 0.5 + 0.5 * (double)mf__gl_xi(j)));
+                    mf_real u2 = mf__gl_node01(p2, j, panels);
                     mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);
                     mf_real pdf, w;
                     if (!(wi.z > MF_R(0.0))) continue;
@@ -357,10 +357,10 @@ MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_rea
     h = 1.0 / (double)panels;
     for (p1 = 0; p1 < panels; ++p1)
         for (i = 0; i < 8; ++i) {
-            mf_real u1 = (mf_real)(h * ((double)p1 + 0.5 + 0.5 * (double)mf__gl_xi(i)));
+            mf_real u1 = mf__gl_node01(p1, i, panels);
             for (p2 = 0; p2 < panels; ++p2)
                 for (j = 0; j < 8; ++j) {
-                    mf_real u2 = (mf_real)(h * ((double)p2 + 0.5 + 0.5 * (double)mf__gl_xi(j)));
+                    mf_real u2 = mf__gl_node01(p2, j, panels);
                     mf_vec3 m = mf_sample_visible(d, wo, u1, u2), wr, wt;
                     mf_real F, v = MF_R(0.0);
                     if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) continue;

@@ -15,14 +15,7 @@
 #define N 64
 #define PANELS 16
 
-static void print_float(double v)
-{
-    char buf[64];
-    snprintf(buf, sizeof buf, "%.6g", v);
-    if (!strpbrk(buf, ".e")) strcat(buf, ".0");
-    else if (!strchr(buf, '.')) { char *e = strchr(buf, 'e'); memmove(e + 2, e, strlen(e) + 1); e[0] = '.'; e[1] = '0'; }
-    printf("%sf,", buf);
-}
+#include "print_float.h"
 
 int main(void)
 {

@@ -13,15 +13,7 @@
 #include <string.h>
 #include <time.h>
 
-/* a float literal: %.6g with a decimal point or exponent, and the f suffix */
-static void print_float(double v)
-{
-    char buf[64];
-    snprintf(buf, sizeof buf, "%.6g", v);
-    if (!strpbrk(buf, ".e")) strcat(buf, ".0");
-    else if (!strchr(buf, '.')) { char *e = strchr(buf, 'e'); memmove(e + 2, e, strlen(e) + 1); e[0] = '.'; e[1] = '0'; }
-    printf("%sf,", buf);
-}
+#include "print_float.h"
 
 /* The opening of src/14_ltc_table.h, up to the first entry. */
 static void print_module_head(int n)
