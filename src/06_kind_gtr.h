@@ -76,30 +76,8 @@ MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm)
     return d->p.gtr.norm / (MF_POW(den, d->p.gtr.gamma) * l2 * l2);
 }
 
-/* GTR Lambda at the integer tails, in t2 = tan^2(theta) and a2 = alpha^2.
- * Derived from thesis Eq. C.7-C.11 with mu = 1/t; differences such as
- * sqrt(1 + a2 t2) - 1 are written as quotients so nothing cancels. */
-MF_INLINE void mf__gtr_lambda_nodes(mf_real a2, mf_real L, mf_real t2, mf_real lam[5])
-{
-    mf_real qa = MF_SQRT(MF_R(1.0) + a2 * t2), qb = MF_SQRT(MF_R(1.0) + t2);
-    mf_real ea = a2 * t2 / (qa + MF_R(1.0));           /* qa - 1 */
-    mf_real a4 = a2 * a2, A4, d, y;
-    lam[0] = t2 / (MF_R(2.0) * (MF_R(1.0) + qb));       /* C.7: GGX with alpha = 1 */
-    lam[2] = MF_R(0.5) * ea;                            /* C.9: GGX */
-    /* C.8: Lambda1 = [(qa - qb) - log1p((qa - qb)/(1 + qb))] / L */
-    d = t2 / (qa + qb);                                 /* (qa - qb) / (a2 - 1) */
-    y = (a2 - MF_R(1.0)) * d / (MF_R(1.0) + qb);
-    lam[1] = d * (MF_R(1.0) - mf__log1p_over_x(y) / (MF_R(1.0) + qb)) / mf__x_over_expm1(L);
-    /* C.10 */
-    lam[3] = a2 * t2 * ((MF_R(3.0) * a2 + MF_R(1.0)) * ea + MF_R(4.0) * a2) /
-             (MF_R(4.0) * (a2 + MF_R(1.0)) * qa * (qa + MF_R(1.0)));
-    /* C.11 */
-    A4 = MF_R(8.0) * (a4 + a2 + MF_R(1.0));
-    lam[4] = a2 * t2 * (MF_R(12.0) * a4 - A4 * ea * (qa + MF_R(0.5)) / (qa + MF_R(1.0)) +
-                        MF_R(3.0) * a2 * t2 * (MF_R(5.0) * a4 + MF_R(2.0) * a2 + MF_R(1.0))) /
-             (MF_R(2.0) * A4 * qa * qa * qa);
-}
-/* Dimov's gamma = 4 Lambda (C.11) alone, for the gamma-4 mixture. */
+/* Dimov's gamma = 4 Lambda (C.11), in t2 = tan^2(theta) and a2 = alpha^2
+ * (also the component of the gamma-4 mixture). */
 MF_INLINE mf_real mf__gtr_lambda4(mf_real a2, mf_real t2)
 {
     mf_real a2t2 = a2 * t2, qa = MF_SQRT(MF_R(1.0) + a2t2), ea = a2t2 / (qa + MF_R(1.0));
@@ -107,6 +85,27 @@ MF_INLINE mf_real mf__gtr_lambda4(mf_real a2, mf_real t2)
     return a2t2 * (MF_R(12.0) * a4 - A4 * ea * (qa + MF_R(0.5)) / (qa + MF_R(1.0)) +
                    MF_R(3.0) * a2t2 * (MF_R(5.0) * a4 + MF_R(2.0) * a2 + MF_R(1.0))) /
            (MF_R(2.0) * A4 * qa * qa * qa);
+}
+
+/* GTR Lambda at integer gamma g = 0..4 (thesis Eq. C.7-C.11 with mu = 1/t),
+ * only the one asked for; differences such as sqrt(1 + a2 t2) - 1 are
+ * written as quotients so nothing cancels. */
+MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
+{
+    mf_real qa, qb, ea, d, y;
+    if (g == 4) return mf__gtr_lambda4(a2, t2);                       /* C.11 */
+    qb = MF_SQRT(MF_R(1.0) + t2);
+    if (g == 0) return t2 / (MF_R(2.0) * (MF_R(1.0) + qb));           /* C.7: GGX with alpha = 1 */
+    qa = MF_SQRT(MF_R(1.0) + a2 * t2);
+    ea = a2 * t2 / (qa + MF_R(1.0));                                   /* qa - 1 */
+    if (g == 2) return MF_R(0.5) * ea;                                 /* C.9: GGX */
+    if (g == 3)                                                        /* C.10 */
+        return a2 * t2 * ((MF_R(3.0) * a2 + MF_R(1.0)) * ea + MF_R(4.0) * a2) /
+               (MF_R(4.0) * (a2 + MF_R(1.0)) * qa * (qa + MF_R(1.0)));
+    /* C.8: Lambda1 = [(qa - qb) - log1p((qa - qb)/(1 + qb))] / L */
+    d = t2 / (qa + qb);                                                /* (qa - qb) / (a2 - 1) */
+    y = (a2 - MF_R(1.0)) * d / (MF_R(1.0) + qb);
+    return d * (MF_R(1.0) - mf__log1p_over_x(y) / (MF_R(1.0) + qb)) / mf__x_over_expm1(L);
 }
 
 /* GTR Lambda, exact at every gamma. With x = tan^2, the slope density is
@@ -148,11 +147,9 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
     if (p->mix == 2) {   /* C.11 cancels to -1e-22 in float at small a^2 t^2 */
         for (j = 0; j < p->nq; ++j) sum += p->qw[j] * mf__gtr_lambda4(p->qb[j], t2);
         return mf_max(sum, MF_R(0.0));
-    } else {
-        mf_real lam[5];
-        mf__gtr_lambda_nodes(d->ax * d->ax, p->L, t2, lam);
-        return mf_max(lam[(int)p->gamma], MF_R(0.0));   /* C.11 can round to -4e-23 in float */
     }
+    /* integer gamma: C.11 can round to -4e-23 in float */
+    return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
 }
 
 /* Gauss-Jacobi rule for the weight (1-x)^ea (1+x)^eb on [-1, 1] by Golub and
