@@ -134,34 +134,58 @@ MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 w
 MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
 
 /* @impl */
-/* E(wo) = int over the unit square of f cos / pdf at wi = mf_brdf_sample(u):
- * the integrand is G2 / G1 (or the general ratio), smooth except where wi
- * crosses the horizon. */
-MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
+/* The albedo integrands at (u1, u2) of the unit square: eta = 0, f cos / pdf
+ * at wi = mf_brdf_sample(u) (G2 / G1, smooth except where wi crosses the
+ * horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
+ * and transmitted weights F (1 + lo) G2 and (1 - F) (1 + lo) G2 at the
+ * visible normal m(u). 0 where there is no sample. */
+MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2)
 {
-    double sum = 0.0, h;
+    mf_real v = MF_R(0.0);
+    if (!(eta > MF_R(0.0))) {
+        mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);
+        mf_real pdf;
+        if (!(wi.z > MF_R(0.0))) return MF_R(0.0);
+        pdf = mf_brdf_pdf(d, wo, wi);
+        if (!(pdf > MF_R(0.0))) return MF_R(0.0);
+        v = mf_brdf(d, wo, wi) * wi.z / pdf;
+    } else {
+        mf_vec3 m = mf_sample_visible(d, wo, u1, u2), wr, wt;
+        mf_real F;
+        if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return MF_R(0.0);
+        F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
+        wr = mf_reflect(wo, m);
+        if (wr.z > MF_R(0.0)) v += F * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wr);
+        if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0))
+            v += (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
+    }
+    return v == v && v < MF_BIG ? v : MF_R(0.0);
+}
+
+/* The albedo by (8 panels)^2 Gauss-Legendre nodes over the unit square,
+ * clamped to [0, 1]. */
+MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, int panels)
+{
+    double sum = 0.0, h = 1.0 / (double)panels;
     int p1, p2, i, j;
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
-    if (!(wo.z > MF_R(0.0)) || !(wo.z <= MF_R(1.0)) || !(wo.x == wo.x) || !(wo.y == wo.y)) return MF_R(0.0);
-    h = 1.0 / (double)panels;
     for (p1 = 0; p1 < panels; ++p1)
         for (i = 0; i < 8; ++i) {
             mf_real u1 = mf__gl_node01(p1, i, panels);
             for (p2 = 0; p2 < panels; ++p2)
                 for (j = 0; j < 8; ++j) {
-                    mf_real u2 = mf__gl_node01(p2, j, panels);
-                    mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);
-                    mf_real pdf, w;
-                    if (!(wi.z > MF_R(0.0))) continue;
-                    pdf = mf_brdf_pdf(d, wo, wi);
-                    if (!(pdf > MF_R(0.0))) continue;
-                    w = mf_brdf(d, wo, wi) * wi.z / pdf;
-                    if (w == w && w < MF_BIG)
-                        sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)w;
+                    mf_real v = mf__albedo_weight(d, wo, eta, lo, u1, mf__gl_node01(p2, j, panels));
+                    if (v != MF_R(0.0)) sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
                 }
         }
     sum *= h * h;
     return sum > 0.0 ? (sum < 1.0 ? (mf_real)sum : MF_R(1.0)) : MF_R(0.0);
+}
+
+MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
+{
+    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
+    if (!(wo.z > MF_R(0.0)) || !(wo.z <= MF_R(1.0)) || !(wo.x == wo.x) || !(wo.y == wo.y)) return MF_R(0.0);
+    return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels);
 }
 
 /* 2 int_0^1 e(x) mu dmu with mu = x^2 (dmu = 2 x dx) for e piecewise linear
@@ -182,6 +206,28 @@ MF_INLINE double mf__energy_avg_1d(const double *e, int n)
     return sum;
 }
 
+/* The table node i of n: mu = x^2, x = i / (n - 1) (mu >= 1e-4), at
+ * azimuth phi; and back, the segment i and fraction of |mu| in [0, 1]. */
+MF_INLINE mf_vec3 mf__energy_node_dir(int i, int n, mf_real phi)
+{
+    mf_real x = (mf_real)i / (mf_real)(n - 1), mu = mf_max(x * x, MF_R(1e-4));
+    mf_real s = MF_SQRT(MF_R(1.0) - mu * mu);
+    return mf_vec3_make(s * MF_COS(phi), s * MF_SIN(phi), mu);
+}
+MF_INLINE mf_real mf__energy_segment(mf_real mu, int n, int *i)
+{
+    mf_real x = mf_clamp(MF_SQRT(mf_min(MF_FABS(mu), MF_R(1.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(n - 1);
+    *i = (int)x;
+    if (*i > n - 2) *i = n - 2;
+    return x - (mf_real)*i;
+}
+/* |w.z| / |w|, or -1 when w is zero or not finite */
+MF_INLINE mf_real mf__energy_mu(mf_vec3 w)
+{
+    mf_real len = MF_SQRT(w.x * w.x + w.y * w.y + w.z * w.z);
+    return len > MF_R(0.0) && len < MF_BIG ? MF_FABS(w.z) / len : MF_R(-1.0);
+}
+
 /* bilinear read of the built-in table of kind k (0 GGX, 1 Beckmann): the
  * E_avg column when mu < 0 */
 MF_INLINE mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
@@ -189,7 +235,7 @@ MF_INLINE mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
     int n, i, j, col;
     const float *t = mf__energy_data(&n);
     mf_real r = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(n - 1);
-    mf_real x, fr, fx, v0, v1;
+    mf_real fr, fx, v0, v1;
     const float *blk = t + (size_t)k * (size_t)n * (size_t)(n + 1);
     i = (int)r; if (i > n - 2) i = n - 2;
     fr = r - (mf_real)i;
@@ -197,9 +243,7 @@ MF_INLINE mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
         col = n;
         return (mf_real)blk[i * (n + 1) + col] * (MF_R(1.0) - fr) + (mf_real)blk[(i + 1) * (n + 1) + col] * fr;
     }
-    x = mf_clamp(MF_SQRT(mf_min(mu, MF_R(1.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(n - 1);
-    j = (int)x; if (j > n - 2) j = n - 2;
-    fx = x - (mf_real)j;
+    fx = mf__energy_segment(mu, n, &j);
     v0 = (mf_real)blk[i * (n + 1) + j] * (MF_R(1.0) - fx) + (mf_real)blk[i * (n + 1) + j + 1] * fx;
     v1 = (mf_real)blk[(i + 1) * (n + 1) + j] * (MF_R(1.0) - fx) + (mf_real)blk[(i + 1) * (n + 1) + j + 1] * fx;
     return v0 * (MF_R(1.0) - fr) + v1 * fr;
@@ -217,11 +261,12 @@ MF_INLINE int mf__energy_kind(const mf_ndf *d)
 MFDEF mf_real mf_albedo(const mf_ndf *d, mf_vec3 wo)
 {
     int k = mf__energy_kind(d);
-    mf_real len;
+    mf_real mu, len;
     if (!d || !(wo.z > MF_R(0.0))) return MF_R(0.0);
+    mu = mf__energy_mu(wo);
+    if (!(mu >= MF_R(0.0))) return MF_R(0.0);
+    if (k >= 0) return mf__energy_lookup(k, MF_SQRT(d->ax * d->ay), mu);
     len = MF_SQRT(wo.x * wo.x + wo.y * wo.y + wo.z * wo.z);
-    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return MF_R(0.0);
-    if (k >= 0) return mf__energy_lookup(k, MF_SQRT(d->ax * d->ay), wo.z / len);
     return mf_albedo_integrate(d, mf_scale(wo, MF_R(1.0) / len), 1);
 }
 
@@ -235,11 +280,7 @@ MFDEF mf_real mf_albedo_average(const mf_ndf *d)
     n_phi = (!d->transformed && d->ax == d->ay && d->type != MF_NDF_LEADR && d->type != MF_NDF_TABULATED) ? 1 : 8;
     for (j = 0; j < n_phi; ++j) {
         mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
-        for (i = 0; i < 17; ++i) {
-            mf_real x = (mf_real)i / MF_R(16.0), mu = mf_max(x * x, MF_R(1e-4));
-            mf_real s = MF_SQRT(MF_R(1.0) - mu * mu);
-            e[i] = (double)mf_albedo_integrate(d, mf_vec3_make(s * MF_COS(phi), s * MF_SIN(phi), mu), 1);
-        }
+        for (i = 0; i < 17; ++i) e[i] = (double)mf_albedo_integrate(d, mf__energy_node_dir(i, 17, phi), 1);
         sum += mf__energy_avg_1d(e, 17);
     }
     return (mf_real)(sum / (double)n_phi);
@@ -291,9 +332,7 @@ MFDEF mf_result mf_albedo_table_build(mf_albedo_table *t, const mf_ndf *d, int n
     for (j = 0; j < n_phi; ++j) {
         mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
         for (i = 0; i < n_mu; ++i) {
-            mf_real x = (mf_real)i / (mf_real)(n_mu - 1), mu = mf_max(x * x, MF_R(1e-4));
-            mf_real s = MF_SQRT(MF_R(1.0) - mu * mu);
-            mf_real e = mf_albedo_integrate(d, mf_vec3_make(s * MF_COS(phi), s * MF_SIN(phi), mu), panels);
+            mf_real e = mf_albedo_integrate(d, mf__energy_node_dir(i, n_mu, phi), panels);
             if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_albedo_table_release(t); return MF_ERROR_INVALID_DATA; }
             t->E[(size_t)j * (size_t)n_mu + (size_t)i] = e;
             row[i] = (double)e;
@@ -309,15 +348,13 @@ MFDEF mf_result mf_albedo_table_build(mf_albedo_table *t, const mf_ndf *d, int n
 
 MFDEF mf_real mf_albedo_table_eval(const mf_albedo_table *t, mf_vec3 wo)
 {
-    mf_real len, x, fx, ph, fp, v0, v1;
+    mf_real mu, fx, ph, fp, v0, v1;
     int i, j0, j1;
     const mf_real *E;
     if (!t || !t->E || t->n_mu < 2 || t->n_phi < 1 || !(wo.z > MF_R(0.0))) return MF_R(0.0);
-    len = MF_SQRT(wo.x * wo.x + wo.y * wo.y + wo.z * wo.z);
-    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return MF_R(0.0);
-    x = mf_clamp(MF_SQRT(mf_min(wo.z / len, MF_R(1.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(t->n_mu - 1);
-    i = (int)x; if (i > t->n_mu - 2) i = t->n_mu - 2;
-    fx = x - (mf_real)i;
+    mu = mf__energy_mu(wo);
+    if (!(mu >= MF_R(0.0))) return MF_R(0.0);
+    fx = mf__energy_segment(mu, t->n_mu, &i);
     E = t->E;
     if (t->n_phi == 1) return E[i] * (MF_R(1.0) - fx) + E[i + 1] * fx;
     ph = MF_ATAN2(wo.y, wo.x);
@@ -346,34 +383,11 @@ MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
 /* ---- rough dielectrics */
 MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels)
 {
-    double sum = 0.0, h;
-    mf_real lo;
-    int p1, p2, i, j;
     if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
     if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(wo.x == wo.x) || !(wo.y == wo.y) || !(MF_FABS(wo.z) <= MF_R(1.0))) return MF_R(0.0);
     if (!(wo.z != MF_R(0.0))) return MF_R(0.0);
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; }   /* as mf_dielectric_sample */
-    lo = mf_lambda(d, wo);
-    h = 1.0 / (double)panels;
-    for (p1 = 0; p1 < panels; ++p1)
-        for (i = 0; i < 8; ++i) {
-            mf_real u1 = mf__gl_node01(p1, i, panels);
-            for (p2 = 0; p2 < panels; ++p2)
-                for (j = 0; j < 8; ++j) {
-                    mf_real u2 = mf__gl_node01(p2, j, panels);
-                    mf_vec3 m = mf_sample_visible(d, wo, u1, u2), wr, wt;
-                    mf_real F, v = MF_R(0.0);
-                    if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) continue;
-                    F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
-                    wr = mf_reflect(wo, m);
-                    if (wr.z > MF_R(0.0)) v += F * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wr);
-                    if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0))
-                        v += (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
-                    if (v == v && v < MF_BIG) sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
-                }
-        }
-    sum *= h * h;
-    return sum > 0.0 ? (sum < 1.0 ? (mf_real)sum : MF_R(1.0)) : MF_R(0.0);
+    return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels);
 }
 
 MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
@@ -399,9 +413,10 @@ MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *
     if (!row) { MF_FREE(t->E); t->E = 0; return MF_ERROR_OUT_OF_MEMORY; }
     for (s = 0; s < 2; ++s) {
         for (i = 0; i < n_mu; ++i) {
-            mf_real xx = (mf_real)i / (mf_real)(n_mu - 1), mu = mf_max(xx * xx, MF_R(1e-4));
-            mf_real sn = MF_SQRT(MF_R(1.0) - mu * mu);
-            mf_real e = mf_dielectric_albedo_integrate(d, mf_vec3_make(sn, MF_R(0.0), s ? -mu : mu), eta, panels);
+            mf_vec3 w = mf__energy_node_dir(i, n_mu, MF_R(0.0));
+            mf_real e;
+            if (s) w.z = -w.z;
+            e = mf_dielectric_albedo_integrate(d, w, eta, panels);
             if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_dielectric_ms_release(t); return MF_ERROR_INVALID_DATA; }
             t->E[(size_t)s * (size_t)n_mu + (size_t)i] = e;
             row[i] = (double)e;
@@ -427,16 +442,14 @@ MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *
 
 MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
 {
-    mf_real len, x, fx;
+    mf_real mu, fx;
     const mf_real *E;
     int i;
     if (!t || !t->E || t->n_mu < 2 || !(wo.z != MF_R(0.0))) return MF_R(0.0);
-    len = MF_SQRT(wo.x * wo.x + wo.y * wo.y + wo.z * wo.z);
-    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return MF_R(0.0);
+    mu = mf__energy_mu(wo);
+    if (!(mu >= MF_R(0.0))) return MF_R(0.0);
     E = t->E + (wo.z < MF_R(0.0) ? t->n_mu : 0);
-    x = mf_clamp(MF_SQRT(mf_min(MF_FABS(wo.z) / len, MF_R(1.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(t->n_mu - 1);
-    i = (int)x; if (i > t->n_mu - 2) i = t->n_mu - 2;
-    fx = x - (mf_real)i;
+    fx = mf__energy_segment(mu, t->n_mu, &i);
     return E[i] * (MF_R(1.0) - fx) + E[i + 1] * fx;
 }
 
