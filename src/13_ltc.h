@@ -255,11 +255,11 @@ MF_INLINE mf_real mf__polygon_clipped(const mf_real *A, const mf_vec3 *p, int n)
     return sum;
 }
 
-/* The same over 2 pi. Polygons above the horizon take a faster path: quads
+/* The same, by a faster path for polygons above the horizon: quads
  * straight-line, other polygons in blocks of 16 vertices (transform and
  * normalize into a buffer, then the edges); the first vertex below the
  * horizon hands over to the clipping loop. */
-MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
+MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
 {
     mf_vec3 u[16], u0 = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), prev = u0;
     mf_real s0 = MF_R(0.0), s1 = MF_R(0.0);
@@ -269,12 +269,12 @@ MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, in
         mf_vec3 b0 = MF__LTC_T(A, p[0]), b1 = MF__LTC_T(A, p[1]), b2 = MF__LTC_T(A, p[2]), b3 = MF__LTC_T(A, p[3]);
         if (!(b0.z > MF_R(0.0) && b1.z > MF_R(0.0) && b2.z > MF_R(0.0) && b3.z > MF_R(0.0))) {
             u[0] = b0; u[1] = b1; u[2] = b2; u[3] = b3;   /* clip the transformed quad */
-            return mf__polygon_clipped((const mf_real *)0, u, 4) * MF_R(0.15915494309189533577);
+            return mf__polygon_clipped((const mf_real *)0, u, 4);
         }
         b0 = mf__unit_or_zero(b0); b1 = mf__unit_or_zero(b1); b2 = mf__unit_or_zero(b2); b3 = mf__unit_or_zero(b3);
         s0 = mf__edge_z(b0, b1) + mf__edge_z(b1, b2);
         s1 = mf__edge_z(b2, b3) + mf__edge_z(b3, b0);
-        return (s0 + s1) * MF_R(0.15915494309189533577);   /* 1 / (2 pi) */
+        return s0 + s1;
     }
     for (base = 0; base < n; base += 16) {
         m = n - base < 16 ? n - base : 16;
@@ -289,9 +289,15 @@ MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, in
         prev = u[m - 1];
     }
     s0 += mf__edge_z(prev, u0);
-    return (s0 + s1) * MF_R(0.15915494309189533577);
+    return s0 + s1;
 clip:
-    return mf__polygon_clipped(A, p, n) * MF_R(0.15915494309189533577);
+    return mf__polygon_clipped(A, p, n);
+}
+
+/* the cosine form factor: the sum over 2 pi */
+MF_INLINE mf_real mf__polygon_form_factor(const mf_real *A, const mf_vec3 *p, int n)
+{
+    return mf__polygon_sum(A, p, n) * MF_R(0.15915494309189533577);
 }
 
 MF_INLINE mf_real mf__sided(mf_real ff, int two_sided)
