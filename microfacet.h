@@ -446,7 +446,8 @@ typedef float mf_real;
 #define MF__SITE_TAB_PHI 4     /* tabulated anisotropic azimuth, 60 */
 #define MF__SITE_BECKMANN 5    /* Beckmann visible slope (Halley), 60 */
 #define MF__SITE_LTC_FIT 6     /* Nelder-Mead of the LTC fit, 400 per restart */
-#define MF__SITE_COUNT 7
+#define MF__SITE_REJECT 7      /* GTR and Student-t visible-normal rejection, 64 */
+#define MF__SITE_COUNT 8
 #ifndef MF__SOLVER_DONE
 #define MF__SOLVER_DONE(site, it, cap) ((void)0)
 #endif
@@ -476,6 +477,7 @@ typedef float mf_real;
 #define mf__ndf_sample_visible MF__SYM(mf__ndf_sample_visible)
 #define mf__beckmann_visible_slopes MF__SYM(mf__beckmann_visible_slopes)
 #define mf__gtr_mix_init MF__SYM(mf__gtr_mix_init)
+#define mf__gtr_sampler_init MF__SYM(mf__gtr_sampler_init)
 #define mf__gtr_D MF__SYM(mf__gtr_D)
 #define mf__gtr_lambda MF__SYM(mf__gtr_lambda)
 #define mf__gtr_sample_D MF__SYM(mf__gtr_sample_D)
@@ -588,7 +590,9 @@ typedef struct mf_ndf_gtr {
     mf_real RK, RMK;    /* kL / expm1(kL) and -kL / expm1(-kL), k = 1 - gamma */
     int mix;            /* Lambda: 0 closed form (integer gamma), 1 GGX mixture, 2 gamma-4 mixture */
     int nq;             /* nodes of the mixture rule */
+    int vmode;          /* visible sampler: 0 GGX of alpha vs[0], 1 GGX mixture, 2 rejection from GGX */
     mf_real qb[MF__GTR_NQ], qw[MF__GTR_NQ];   /* mixture nodes alpha_b^2 and weights */
+    mf_real vs[6];      /* the sampler's constants (mf__gtr_sampler_init) */
 } mf_ndf_gtr;
 typedef struct mf_ndf_leadr {
     mf_real mx, my;            /* mean slope */
@@ -602,6 +606,7 @@ typedef struct mf_ndf_student_t {
     mf_real K;          /* marginal slope density constant: P2(x) = K (1 + x^2/(g-1))^(1/2-g) */
     mf_real lbeta;      /* log B(gamma - 1, 1/2) */
     mf_real vndf_p;     /* tail exponent of the numerical VNDF sampler's substitution */
+    mf_real vk;         /* gamma > 2: 1/K of the visible sampler's rejection from GGX */
 } mf_ndf_student_t;
 /* A tabulated (piecewise-linear) distribution: the arrays of one built NDF, all
  * in one allocation (block, bytes) owned until mf_tabulated_release. Fields are
@@ -1330,6 +1335,53 @@ MF_FORCE_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w,
     return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
+/* GGX visible normals for the roughness (ax, ay) / k, k > 0: the VNDF is
+ * unchanged when (alpha, w.z) are scaled together, so the huge roughness of a
+ * heavy-tailed kind's mixture component never overflows. */
+MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 h = mf__ggx_vndf_unnormalized(ax, ay, mf_vec3_make(w.x, w.y, k * w.z), u1, u2, MF_R(1.0));
+    h.z *= k;
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+}
+
+/* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
+ * a counter seeded by the bits of the caller's (u1, u2) and hashed by an
+ * integer mixer (xor-shift-multiply rounds), so every sampler stays a
+ * function of (u1, u2). */
+MF_INLINE unsigned int mf__mix32(unsigned int x)
+{
+    x ^= x >> 16; x *= 0x7feb352du; x &= 0xffffffffu;
+    x ^= x >> 15; x *= 0x846ca68bu; x &= 0xffffffffu;
+    return x ^ (x >> 16);
+}
+MF_INLINE unsigned int mf__real_bits(mf_real x)
+{
+#ifdef MF_USE_DOUBLE
+    union { double d; unsigned int u[2]; } v;
+    v.d = x;
+    return v.u[0] ^ mf__mix32(v.u[1]);
+#else
+    union { float f; unsigned int u; } v;
+    v.f = x;
+    return v.u;
+#endif
+}
+MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
+{
+    return mf__mix32(mf__real_bits(u1) ^ mf__mix32(mf__real_bits(u2) + 0x9e3779b9u));
+}
+/* the next uniform in [0, 1) */
+MF_INLINE mf_real mf__stream_next(unsigned int *s)
+{
+    *s = (*s + 0x9e3779b9u) & 0xffffffffu;
+#ifdef MF_USE_DOUBLE
+    return (mf_real)mf__mix32(*s) * MF_R(2.3283064365386963e-10);
+#else
+    return (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
+#endif
+}
+
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
@@ -1353,6 +1405,7 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_re
  * closed-form inverse CDF; visible normals by the exact numerical inversion
  * of 07_numeric_vndf.h. Everything but the constructor is cold. */
 MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p);
+MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
  * alpha in [MF_ALPHA_MIN, 1], gamma in [0, 4] (clamped; see CLAMPS above).
  * gamma = 2 is GGX, gamma = 1 the Berry distribution (limit C.6), gamma = 0
@@ -1382,6 +1435,7 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     p->RK = mf__x_over_expm1(k * L);
     p->RMK = mf__x_over_expm1(-k * L);
     mf__gtr_mix_init(p);
+    mf__gtr_sampler_init(p, a);
     return d;
 }
 
@@ -1452,6 +1506,8 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
     /* the sampler's tail substitution must cancel tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2) */
     beta = MF_R(0.5) / g1;
     d.p.student_t.vndf_p = MF_R(2.0) / (MF_R(1.0) - beta);
+    /* K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v = 1 */
+    d.p.student_t.vk = MF_R(0.25) * MF_EXP(-gamma * MF_LOG(g1 / gamma));
     return d;
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
@@ -3965,9 +4021,128 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), mf__gtr_tan2(d, t, MF_R(1.0) - t), u2);
 }
 
+/* Visible normals, exact, by one of (mf__gtr_sampler_init chooses):
+ * - gamma = 2, gamma = 0, alpha = 1: GGX of alpha, 1, 1 (the same D);
+ * - gamma in (0, 2): the slope density (1+x)^(gamma-2) (a^2+x)^-gamma is the
+ *   mixture over z in (0, inf) of GGX densities of alpha_b^2 = b =
+ *   (a^2 + z) / (1 + z) with weight f(z) = z^(1-gamma) / ((1 + z)(a^2 + z))
+ *   (Feynman's identity of mf__gtr_lambda with z = s / (1 - s)). The visible
+ *   normals of a mixture: b with weight f(z) (1 + Lambda_b(w)) (each
+ *   component's projected area), then b's GGX VNDF. z is drawn by rejection
+ *   from the envelope f <= z^(1-g)/a^2, z^-g, z^(-1-g) on [0, a^2], [a^2, 1],
+ *   [1, inf) times 1 + Lambda_b <= 1 + (t/2)(a + sqrt z) below 1, 1 + t/2
+ *   above (t = tan theta_w, sqrt b <= a + sqrt z): five power laws, each
+ *   inverted in closed form; accepted 45-80% of the time;
+ * - gamma in (2, 4]: rejection from GGX's VNDF of alpha_p^2 = a^2 / (1 +
+ *   (gamma - 2)(1 - a^2)), accepting with D / (K D_GGX) (the max(0, w.m)
+ *   factor cancels), K = sup D / D_GGX <= 1.27 in closed form.
+ * Normals facing away from w (float rounding at the cap's edge) are drawn
+ * again. The first proposal uses (u1, u2), further draws the stream of
+ * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
+ * numerical inversion of 07_numeric_vndf.h answers. */
 MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real a2 = d->ax * d->ax, g = p->gamma, L = p->L;
+    unsigned int st;
+    int it = 0, fresh = 1;
+    mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    if (p->vmode == 0) return mf_ggx_sample_visible(p->vs[0], p->vs[0], w, u1, u2);
+    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    st = mf__stream_seed(u1, u2);
+    if (p->vmode == 2) {
+        mf_real ap = p->vs[0], ap2 = ap * ap;
+        for (it = 0; it < 64; ++it) {
+            mf_real c2, s2, den, r;
+            m = fresh ? mf_ggx_sample_visible(ap, ap, w, u1, u2)
+                      : mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
+            c2 = m.z * m.z; s2 = m.x * m.x + m.y * m.y; den = a2 * c2 + s2;
+            fresh = 0;
+            if (!(m.z > MF_R(0.0)) || !(den > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
+            /* D / (K D_GGX) = cK ((1+x)/(a^2+x))^(gamma-2) ((ap^2+x)/(a^2+x))^2, x = s2/c2 */
+            r = (ap2 * c2 + s2) / den;
+            r = p->vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
+            if (mf__stream_next(&st) < r) break;
+        }
+    } else {
+        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), a = d->ax, th, c0, W[5], tot;
+        th = sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
+        c0 = MF_R(1.0) + th * a;
+        W[0] = c0 * p->vs[0]; W[1] = th * p->vs[1]; W[2] = c0 * p->vs[2]; W[3] = th * p->vs[3];
+        W[4] = (MF_R(1.0) + th) / g;
+        tot = W[0] + W[1] + W[2] + W[3] + W[4];
+        for (it = 0; it < 64; ++it) {
+            mf_real x = mf__stream_next(&st) * tot, u = MF_R(1.0) - mf__stream_next(&st), z, b, fe, bound;
+            int k;
+            for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
+            if (k == 4) {                        /* [1, inf), in 1/z = u^(1/gamma) */
+                mf_real iz = MF_EXP(MF_LOG(u) / g);
+                b = (a2 * iz + MF_R(1.0)) / (iz + MF_R(1.0));
+                fe = MF_R(1.0) / ((MF_R(1.0) + a2 * iz) * (MF_R(1.0) + iz));
+                bound = MF_R(1.0) + th;
+            } else {
+                mf_real lz;
+                if (k < 2)                       /* [0, a^2]: z = a^2 u^(1/q) */
+                    lz = L + MF_LOG(u) / ((k == 0 ? MF_R(2.0) : MF_R(2.5)) - g);
+                else {                           /* [a^2, 1]: log z = L (1 - u log1p(u e)/(u e) / r) */
+                    mf_real e = k == 2 ? p->EM : p->vs[4], r = k == 2 ? p->RMK : p->vs[5];
+                    lz = L * (MF_R(1.0) - u * mf__log1p_over_x(u * e) / r);
+                }
+                z = MF_EXP(lz);
+                b = (a2 + z) / (MF_R(1.0) + z);
+                fe = (k < 2 ? a2 : z) / ((a2 + z) * (MF_R(1.0) + z));
+                bound = c0 + th * MF_SQRT(z);
+            }
+            /* (1 + Lambda_b) = (1 + sqrt(1 + b t^2)) / 2 */
+            if (mf__stream_next(&st) * bound < fe * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * b))) {
+                mf_real ab = MF_SQRT(b);
+                m = fresh ? mf_ggx_sample_visible(ab, ab, w, u1, u2)
+                          : mf_ggx_sample_visible(ab, ab, w, mf__stream_next(&st), mf__stream_next(&st));
+                fresh = 0;
+                if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
+            }
+        }
+    }
+    MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
+    if (it < 64) return m;
     return mf__iso_sample_visible_view(d, MF_R(1.0), MF_R(1.0), w, u1, u2);
+}
+
+/* The visible sampler's mode and constants (see mf__gtr_sample_visible).
+ * Mixture (gamma in (0, 2)): vs[0..3] the envelope's masses
+ * a^(2(1-g))/(2-g), a^(3-2g)/(5/2-g) on [0, a^2] and -L/r(qL), q = 1-g, 3/2-g,
+ * on [a^2, 1] (r(x) = x/expm1(x)), vs[4], vs[5] = expm1(-qL), r(-qL) for
+ * q = 3/2 - g (q = 1 - g: p->EM, p->RMK). Rejection (gamma in (2, 4]):
+ * vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max of the ratio at
+ * x = 0, infinity and its one stationary point. */
+MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
+{
+    mf_real g = p->gamma, L = p->L, a2 = a * a, q3 = MF_R(1.5) - g;
+    p->vmode = 0;
+    p->vs[0] = g == MF_R(2.0) ? a : MF_R(1.0);
+    if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return;
+    if (g < MF_R(2.0)) {
+        p->vmode = 1;
+        p->vs[0] = (p->E + MF_R(1.0)) / (MF_R(2.0) - g);
+        p->vs[1] = (p->E + MF_R(1.0)) * a / (MF_R(2.5) - g);
+        p->vs[2] = -L / p->RK;
+        p->vs[3] = -L / mf__x_over_expm1(q3 * L);
+        p->vs[4] = MF_EXPM1(-q3 * L);
+        p->vs[5] = mf__x_over_expm1(-q3 * L);
+    } else {
+        mf_real ap2 = a2 / (MF_R(1.0) + (g - MF_R(2.0)) * (MF_R(1.0) - a2)), npi = p->norm * MF_PI;
+        mf_real c1 = (g - MF_R(2.0)) * (ap2 + a2) + MF_R(2.0) * (MF_R(1.0) + a2) - g * (MF_R(1.0) + ap2);
+        mf_real c0 = (g - MF_R(2.0)) * ap2 * a2 + MF_R(2.0) * a2 - g * ap2, K, x;
+        /* ratio at 0 (npi ap^2 a^(-2g)) and at infinity (npi / ap^2), in logs */
+        mf_real l0 = MF_LOG(npi * ap2) - g * L, li = MF_LOG(npi / ap2), lk = mf_max(l0, li);
+        x = c1 != MF_R(0.0) ? -c0 / c1 : MF_R(-1.0);
+        if (x > MF_R(0.0))
+            lk = mf_max(lk, li + (g - MF_R(2.0)) * MF_LOG1P(x) + MF_R(2.0) * MF_LOG1P(x / ap2) - g * MF_LOG(a2 + x) + MF_R(2.0) * MF_LOG(ap2));
+        K = MF_EXP(lk);
+        p->vmode = 2;
+        p->vs[0] = MF_SQRT(ap2);
+        p->vs[1] = npi / (ap2 * K);
+    }
 }
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
@@ -4098,9 +4273,76 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__wm_from_slope_u(d->ax, d->ay, mf__student_t_tan2(d, t, MF_R(1.0) - t), u2);
 }
 
+/* Visible normals, exact, in the space stretched to unit roughness, where
+ * the slope density is (1/pi)(1 + v/(g-1))^-g, v the squared slope:
+ * - gamma = 2: GGX;
+ * - gamma > 2: rejection from GGX's VNDF (unit roughness), accepting with
+ *   D / (K D_GGX) = (1 + v)^2 (1 + v/(g-1))^-g / K (the max(0, w.m) factor
+ *   cancels), K = 4 ((g-1)/g)^g <= 4/e: accepted >= 68% of the time;
+ * - gamma in [1.55, 2): the Gamma(g) = Gamma(2) Beta(g, 2-g) identity makes
+ *   (1 + v/(g-1))^-g the mean of (1 + B v/(g-1))^-2 over B ~ Beta(g, 2 - g):
+ *   the density is the mixture over z = B/(1-B) in (0, inf) of GGX densities
+ *   of alpha_b^2 = b = (g-1)(1 + z)/z with weight f(z) = z^(g-2) / (1 + z).
+ *   As for GTR (mf__gtr_sample_visible), b with weight f (1 + Lambda_b(w)),
+ *   then b's GGX VNDF; z by rejection from f <= z^(g-2), z^(g-3) on (0, 1],
+ *   [1, inf) times 1 + Lambda_b <= 1 + (t/2) sqrt(g-1) (1 + z^-1/2): four
+ *   power laws (integrable because g > 3/2). Components beyond
+ *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
+ *   that b.
+ * Further draws come from mf__stream_next; after 64 rejections (probability
+ * below 1e-10) the exact numerical inversion of 07_numeric_vndf.h answers. */
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
-    return mf__iso_sample_visible_view(d, d->ax, d->ay, w, u1, u2);
+    mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), ax = d->ax, ay = d->ay;
+    unsigned int st;
+    int it = 0, fresh = 1;
+    mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    if (g == MF_R(2.0)) return mf_ggx_sample_visible(ax, ay, w, u1, u2);
+    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    st = mf__stream_seed(u1, u2);
+    if (g > MF_R(2.0)) {
+        for (it = 0; it < 64; ++it) {
+            mf_real c2, q, gc, r;
+            m = fresh ? mf_ggx_sample_visible(ax, ay, w, u1, u2)
+                      : mf_ggx_sample_visible(ax, ay, w, mf__stream_next(&st), mf__stream_next(&st));
+            c2 = m.z * m.z; q = mf__q(ax, ay, m); gc = g1 * c2;
+            fresh = 0;
+            if (!(m.z > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
+            /* (1+v)^2 (1+v/g1)^-g = (g1 (c2+q)/(gc+q))^2 (gc/(gc+q))^(g-2), v = q/c2 */
+            r = g1 * (c2 + q) / (gc + q);
+            r = d->p.student_t.vk * r * r * MF_POW(gc / (gc + q), g - MF_R(2.0));
+            if (mf__stream_next(&st) < r) break;
+        }
+    } else {
+        mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, c0, W[4], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
+        th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
+        c0 = MF_R(1.0) + th * sg;
+        W[0] = c0 / g1; W[1] = th * sg / (g - MF_R(1.5));
+        W[2] = c0 / (MF_R(2.0) - g); W[3] = th * sg / (MF_R(2.5) - g);
+        tot = W[0] + W[1] + W[2] + W[3];
+        for (it = 0; it < 64; ++it) {
+            mf_real x = mf__stream_next(&st) * tot, u = MF_R(1.0) - mf__stream_next(&st), lz, iz, rho, fe, b1;
+            int k;
+            for (k = 0; k < 3 && x >= W[k]; ++k) x -= W[k];
+            /* z = u^(1/q), q = g-1, g-3/2 on (0, 1], g-2, g-5/2 on [1, inf) */
+            lz = mf_max(MF_LOG(u) / (g - MF_R(1.0) - MF_R(0.5) * (mf_real)k), lzmin);
+            iz = MF_EXP(-lz);                       /* 1/z */
+            rho = MF_SQRT(iz);
+            fe = k < 2 ? MF_R(1.0) / (MF_R(1.0) + MF_R(1.0) / iz) : MF_R(1.0) / (MF_R(1.0) + iz);
+            b1 = MF_R(1.0) + iz;                    /* b / (g-1) */
+            /* (1 + Lambda_b) = (1 + sqrt(1 + b t^2)) / 2 against its bound c0 + (t/2) sqrt(g-1) z^-1/2 */
+            if (mf__stream_next(&st) * (c0 + th * sg * rho) < fe * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1 * b1))) {
+                mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
+                m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
+                          : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));
+                fresh = 0;
+                if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
+            }
+        }
+    }
+    MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
+    if (it < 64) return m;
+    return mf__iso_sample_visible_view(d, ax, ay, w, u1, u2);
 }
 /* Index i of the interval [x[i], x[i+1]] holding v (clamped to 0 .. n-2): direct
  * when the nodes are uniform (inv_h > 0), else by bisection. */

@@ -225,7 +225,8 @@ typedef float mf_real;
 #define MF__SITE_TAB_PHI 4     /* tabulated anisotropic azimuth, 60 */
 #define MF__SITE_BECKMANN 5    /* Beckmann visible slope (Halley), 60 */
 #define MF__SITE_LTC_FIT 6     /* Nelder-Mead of the LTC fit, 400 per restart */
-#define MF__SITE_COUNT 7
+#define MF__SITE_REJECT 7      /* GTR and Student-t visible-normal rejection, 64 */
+#define MF__SITE_COUNT 8
 #ifndef MF__SOLVER_DONE
 #define MF__SOLVER_DONE(site, it, cap) ((void)0)
 #endif

@@ -58,6 +58,53 @@ MF_FORCE_INLINE mf_vec3 mf_ggx_sample_visible(mf_real ax, mf_real ay, mf_vec3 w,
     return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
+/* GGX visible normals for the roughness (ax, ay) / k, k > 0: the VNDF is
+ * unchanged when (alpha, w.z) are scaled together, so the huge roughness of a
+ * heavy-tailed kind's mixture component never overflows. */
+MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 h = mf__ggx_vndf_unnormalized(ax, ay, mf_vec3_make(w.x, w.y, k * w.z), u1, u2, MF_R(1.0));
+    h.z *= k;
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+}
+
+/* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
+ * a counter seeded by the bits of the caller's (u1, u2) and hashed by an
+ * integer mixer (xor-shift-multiply rounds), so every sampler stays a
+ * function of (u1, u2). */
+MF_INLINE unsigned int mf__mix32(unsigned int x)
+{
+    x ^= x >> 16; x *= 0x7feb352du; x &= 0xffffffffu;
+    x ^= x >> 15; x *= 0x846ca68bu; x &= 0xffffffffu;
+    return x ^ (x >> 16);
+}
+MF_INLINE unsigned int mf__real_bits(mf_real x)
+{
+#ifdef MF_USE_DOUBLE
+    union { double d; unsigned int u[2]; } v;
+    v.d = x;
+    return v.u[0] ^ mf__mix32(v.u[1]);
+#else
+    union { float f; unsigned int u; } v;
+    v.f = x;
+    return v.u;
+#endif
+}
+MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
+{
+    return mf__mix32(mf__real_bits(u1) ^ mf__mix32(mf__real_bits(u2) + 0x9e3779b9u));
+}
+/* the next uniform in [0, 1) */
+MF_INLINE mf_real mf__stream_next(unsigned int *s)
+{
+    *s = (*s + 0x9e3779b9u) & 0xffffffffu;
+#ifdef MF_USE_DOUBLE
+    return (mf_real)mf__mix32(*s) * MF_R(2.3283064365386963e-10);
+#else
+    return (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
+#endif
+}
+
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }

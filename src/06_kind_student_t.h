@@ -16,6 +16,7 @@ typedef struct mf_ndf_student_t {
     mf_real K;          /* marginal slope density constant: P2(x) = K (1 + x^2/(g-1))^(1/2-g) */
     mf_real lbeta;      /* log B(gamma - 1, 1/2) */
     mf_real vndf_p;     /* tail exponent of the numerical VNDF sampler's substitution */
+    mf_real vk;         /* gamma > 2: 1/K of the visible sampler's rejection from GGX */
 } mf_ndf_student_t;
 /* @api */
 /* Student's t-distribution of slopes (STD), anisotropic. gamma in
@@ -34,6 +35,8 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
     /* the sampler's tail substitution must cancel tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2) */
     beta = MF_R(0.5) / g1;
     d.p.student_t.vndf_p = MF_R(2.0) / (MF_R(1.0) - beta);
+    /* K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v = 1 */
+    d.p.student_t.vk = MF_R(0.25) * MF_EXP(-gamma * MF_LOG(g1 / gamma));
     return d;
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
@@ -109,7 +112,74 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__wm_from_slope_u(d->ax, d->ay, mf__student_t_tan2(d, t, MF_R(1.0) - t), u2);
 }
 
+/* Visible normals, exact, in the space stretched to unit roughness, where
+ * the slope density is (1/pi)(1 + v/(g-1))^-g, v the squared slope:
+ * - gamma = 2: GGX;
+ * - gamma > 2: rejection from GGX's VNDF (unit roughness), accepting with
+ *   D / (K D_GGX) = (1 + v)^2 (1 + v/(g-1))^-g / K (the max(0, w.m) factor
+ *   cancels), K = 4 ((g-1)/g)^g <= 4/e: accepted >= 68% of the time;
+ * - gamma in [1.55, 2): the Gamma(g) = Gamma(2) Beta(g, 2-g) identity makes
+ *   (1 + v/(g-1))^-g the mean of (1 + B v/(g-1))^-2 over B ~ Beta(g, 2 - g):
+ *   the density is the mixture over z = B/(1-B) in (0, inf) of GGX densities
+ *   of alpha_b^2 = b = (g-1)(1 + z)/z with weight f(z) = z^(g-2) / (1 + z).
+ *   As for GTR (mf__gtr_sample_visible), b with weight f (1 + Lambda_b(w)),
+ *   then b's GGX VNDF; z by rejection from f <= z^(g-2), z^(g-3) on (0, 1],
+ *   [1, inf) times 1 + Lambda_b <= 1 + (t/2) sqrt(g-1) (1 + z^-1/2): four
+ *   power laws (integrable because g > 3/2). Components beyond
+ *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
+ *   that b.
+ * Further draws come from mf__stream_next; after 64 rejections (probability
+ * below 1e-10) the exact numerical inversion of 07_numeric_vndf.h answers. */
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
-    return mf__iso_sample_visible_view(d, d->ax, d->ay, w, u1, u2);
+    mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), ax = d->ax, ay = d->ay;
+    unsigned int st;
+    int it = 0, fresh = 1;
+    mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    if (g == MF_R(2.0)) return mf_ggx_sample_visible(ax, ay, w, u1, u2);
+    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    st = mf__stream_seed(u1, u2);
+    if (g > MF_R(2.0)) {
+        for (it = 0; it < 64; ++it) {
+            mf_real c2, q, gc, r;
+            m = fresh ? mf_ggx_sample_visible(ax, ay, w, u1, u2)
+                      : mf_ggx_sample_visible(ax, ay, w, mf__stream_next(&st), mf__stream_next(&st));
+            c2 = m.z * m.z; q = mf__q(ax, ay, m); gc = g1 * c2;
+            fresh = 0;
+            if (!(m.z > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
+            /* (1+v)^2 (1+v/g1)^-g = (g1 (c2+q)/(gc+q))^2 (gc/(gc+q))^(g-2), v = q/c2 */
+            r = g1 * (c2 + q) / (gc + q);
+            r = d->p.student_t.vk * r * r * MF_POW(gc / (gc + q), g - MF_R(2.0));
+            if (mf__stream_next(&st) < r) break;
+        }
+    } else {
+        mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, c0, W[4], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
+        th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
+        c0 = MF_R(1.0) + th * sg;
+        W[0] = c0 / g1; W[1] = th * sg / (g - MF_R(1.5));
+        W[2] = c0 / (MF_R(2.0) - g); W[3] = th * sg / (MF_R(2.5) - g);
+        tot = W[0] + W[1] + W[2] + W[3];
+        for (it = 0; it < 64; ++it) {
+            mf_real x = mf__stream_next(&st) * tot, u = MF_R(1.0) - mf__stream_next(&st), lz, iz, rho, fe, b1;
+            int k;
+            for (k = 0; k < 3 && x >= W[k]; ++k) x -= W[k];
+            /* z = u^(1/q), q = g-1, g-3/2 on (0, 1], g-2, g-5/2 on [1, inf) */
+            lz = mf_max(MF_LOG(u) / (g - MF_R(1.0) - MF_R(0.5) * (mf_real)k), lzmin);
+            iz = MF_EXP(-lz);                       /* 1/z */
+            rho = MF_SQRT(iz);
+            fe = k < 2 ? MF_R(1.0) / (MF_R(1.0) + MF_R(1.0) / iz) : MF_R(1.0) / (MF_R(1.0) + iz);
+            b1 = MF_R(1.0) + iz;                    /* b / (g-1) */
+            /* (1 + Lambda_b) = (1 + sqrt(1 + b t^2)) / 2 against its bound c0 + (t/2) sqrt(g-1) z^-1/2 */
+            if (mf__stream_next(&st) * (c0 + th * sg * rho) < fe * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1 * b1))) {
+                mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
+                m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
+                          : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));
+                fresh = 0;
+                if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
+            }
+        }
+    }
+    MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
+    if (it < 64) return m;
+    return mf__iso_sample_visible_view(d, ax, ay, w, u1, u2);
 }

@@ -563,7 +563,13 @@ static void solvers_adversarial(void)
                     mf_vec3 m = mf_sample_visible(&d, views[v], mft_adv_u(i), mft_adv_u(j));
                     mf_vec3 n = mf_sample_D(&d, mft_adv_u(i), mft_adv_u(j));
                     okf &= mft_finite3(m) && mft_finite3(n);
+                    /* the exact numerical inversion the rejection samplers fall back on */
+                    if (k < 4) {
+                        mf_real s = k < 2 ? MF_R(1.0) : d.ax;
+                        okf &= mft_finite3(mf__iso_sample_visible_view(&d, s, s, views[v], mft_adv_u(i), mft_adv_u(j)));
+                    }
                 }
+    mft_sv_check(MF__SITE_REJECT, "GTR / Student-t visible-normal rejection", 0, okf);
     mft_sv_check(MF__SITE_PHI_COS, "visible-normal azimuth", 0, okf);
     mft_sv_check(MF__SITE_NUM_VNDF, "numerical visible-normal inversion", 0, okf);
     mft_sv_check(MF__SITE_BECKMANN, "Beckmann visible slope (Halley)", 0, okf);
