@@ -4023,7 +4023,8 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 
 /* Visible normals, exact, by one of (mf__gtr_sampler_init chooses):
  * - gamma = 2, gamma = 0, alpha = 1: GGX of alpha, 1, 1 (the same D);
- * - gamma in (0, 2): the slope density (1+x)^(gamma-2) (a^2+x)^-gamma is the
+ * - gamma in (0, 2) where the GGX proposal below has K > 1.5 (alpha below
+ *   about 0.15): the slope density (1+x)^(gamma-2) (a^2+x)^-gamma is the
  *   mixture over z in (0, inf) of GGX densities of alpha_b^2 = b =
  *   (a^2 + z) / (1 + z) with weight f(z) = z^(1-gamma) / ((1 + z)(a^2 + z))
  *   (Feynman's identity of mf__gtr_lambda with z = s / (1 - s)). The visible
@@ -4033,9 +4034,9 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  *   [1, inf) times 1 + Lambda_b <= 1 + (t/2)(a + sqrt z) below 1, 1 + t/2
  *   above (t = tan theta_w, sqrt b <= a + sqrt z): five power laws, each
  *   inverted in closed form; accepted 45-80% of the time;
- * - gamma in (2, 4]: rejection from GGX's VNDF of alpha_p^2 = a^2 / (1 +
- *   (gamma - 2)(1 - a^2)), accepting with D / (K D_GGX) (the max(0, w.m)
- *   factor cancels), K = sup D / D_GGX <= 1.27 in closed form.
+ * - otherwise (gamma in (2, 4], or below 2 with K <= 1.5): rejection from
+ *   GGX's VNDF of alpha_p (mf__gtr_sampler_init), accepting with D / (K D_GGX)
+ *   (the max(0, w.m) factor cancels), K = sup D / D_GGX <= 1.27 above gamma 2.
  * Normals facing away from w (float rounding at the cap's edge) are drawn
  * again. The first proposal uses (u1, u2), further draws the stream of
  * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
@@ -4052,17 +4053,13 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     st = mf__stream_seed(u1, u2);
     if (p->vmode == 2) {
         mf_real ap = p->vs[0], ap2 = ap * ap;
+        m = mf_ggx_sample_visible(ap, ap, w, u1, u2);
         for (it = 0; it < 64; ++it) {
-            mf_real c2, s2, den, r;
-            m = fresh ? mf_ggx_sample_visible(ap, ap, w, u1, u2)
-                      : mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
-            c2 = m.z * m.z; s2 = m.x * m.x + m.y * m.y; den = a2 * c2 + s2;
-            fresh = 0;
-            if (!(m.z > MF_R(0.0)) || !(den > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
             /* D / (K D_GGX) = cK ((1+x)/(a^2+x))^(gamma-2) ((ap^2+x)/(a^2+x))^2, x = s2/c2 */
-            r = (ap2 * c2 + s2) / den;
+            mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
             r = p->vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
-            if (mf__stream_next(&st) < r) break;
+            if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
+            m = mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
         }
     } else {
         mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), a = d->ax, th, c0, W[5], tot;
@@ -4112,37 +4109,40 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
  * Mixture (gamma in (0, 2)): vs[0..3] the envelope's masses
  * a^(2(1-g))/(2-g), a^(3-2g)/(5/2-g) on [0, a^2] and -L/r(qL), q = 1-g, 3/2-g,
  * on [a^2, 1] (r(x) = x/expm1(x)), vs[4], vs[5] = expm1(-qL), r(-qL) for
- * q = 3/2 - g (q = 1 - g: p->EM, p->RMK). Rejection (gamma in (2, 4]):
+ * q = 3/2 - g (q = 1 - g: p->EM, p->RMK). Rejection:
  * vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max of the ratio at
  * x = 0, infinity and its one stationary point. */
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
 {
-    mf_real g = p->gamma, L = p->L, a2 = a * a, q3 = MF_R(1.5) - g;
+    mf_real g = p->gamma, L = p->L, a2 = a * a, q3 = MF_R(1.5) - g, npi = p->norm * MF_PI;
+    mf_real ap2, c1, c0, l0, li, lk, x;
     p->vmode = 0;
     p->vs[0] = g == MF_R(2.0) ? a : MF_R(1.0);
     if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return;
-    if (g < MF_R(2.0)) {
-        p->vmode = 1;
-        p->vs[0] = (p->E + MF_R(1.0)) / (MF_R(2.0) - g);
-        p->vs[1] = (p->E + MF_R(1.0)) * a / (MF_R(2.5) - g);
-        p->vs[2] = -L / p->RK;
-        p->vs[3] = -L / mf__x_over_expm1(q3 * L);
-        p->vs[4] = MF_EXPM1(-q3 * L);
-        p->vs[5] = mf__x_over_expm1(-q3 * L);
-    } else {
-        mf_real ap2 = a2 / (MF_R(1.0) + (g - MF_R(2.0)) * (MF_R(1.0) - a2)), npi = p->norm * MF_PI;
-        mf_real c1 = (g - MF_R(2.0)) * (ap2 + a2) + MF_R(2.0) * (MF_R(1.0) + a2) - g * (MF_R(1.0) + ap2);
-        mf_real c0 = (g - MF_R(2.0)) * ap2 * a2 + MF_R(2.0) * a2 - g * ap2, K, x;
-        /* ratio at 0 (npi ap^2 a^(-2g)) and at infinity (npi / ap^2), in logs */
-        mf_real l0 = MF_LOG(npi * ap2) - g * L, li = MF_LOG(npi / ap2), lk = mf_max(l0, li);
-        x = c1 != MF_R(0.0) ? -c0 / c1 : MF_R(-1.0);
-        if (x > MF_R(0.0))
-            lk = mf_max(lk, li + (g - MF_R(2.0)) * MF_LOG1P(x) + MF_R(2.0) * MF_LOG1P(x / ap2) - g * MF_LOG(a2 + x) + MF_R(2.0) * MF_LOG(ap2));
-        K = MF_EXP(lk);
+    /* GGX proposal: alpha_p^2 = a^gamma below gamma 2 (it minimizes K there),
+     * a^2 / (1 + (gamma - 2)(1 - a^2)) above; K = the largest of the ratio at
+     * x = 0 (npi ap^2 a^(-2g)), infinity (npi / ap^2) and its one stationary
+     * point, the root of a linear equation (the x^2 terms cancel) */
+    ap2 = g < MF_R(2.0) ? MF_EXP(MF_R(0.5) * g * L) : a2 / (MF_R(1.0) + (g - MF_R(2.0)) * (MF_R(1.0) - a2));
+    c1 = (g - MF_R(2.0)) * (ap2 + a2) + MF_R(2.0) * (MF_R(1.0) + a2) - g * (MF_R(1.0) + ap2);
+    c0 = (g - MF_R(2.0)) * ap2 * a2 + MF_R(2.0) * a2 - g * ap2;
+    l0 = MF_LOG(npi * ap2) - g * L; li = MF_LOG(npi / ap2); lk = mf_max(l0, li);
+    x = c1 != MF_R(0.0) ? -c0 / c1 : MF_R(-1.0);
+    if (x > MF_R(0.0))
+        lk = mf_max(lk, li + (g - MF_R(2.0)) * MF_LOG1P(x) + MF_R(2.0) * MF_LOG1P(x / ap2) - g * MF_LOG(a2 + x) + MF_R(2.0) * MF_LOG(ap2));
+    if (g > MF_R(2.0) || lk < MF_LOG(MF_R(1.5))) {   /* K <= 1.5 below gamma 2: alpha >~ 0.15 */
         p->vmode = 2;
         p->vs[0] = MF_SQRT(ap2);
-        p->vs[1] = npi / (ap2 * K);
+        p->vs[1] = npi / (ap2 * MF_EXP(lk));
+        return;
     }
+    p->vmode = 1;
+    p->vs[0] = (p->E + MF_R(1.0)) / (MF_R(2.0) - g);
+    p->vs[1] = (p->E + MF_R(1.0)) * a / (MF_R(2.5) - g);
+    p->vs[2] = -L / p->RK;
+    p->vs[3] = -L / mf__x_over_expm1(q3 * L);
+    p->vs[4] = MF_EXPM1(-q3 * L);
+    p->vs[5] = mf__x_over_expm1(-q3 * L);
 }
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
