@@ -1401,9 +1401,11 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_re
  * limit C.6), isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma. Lambda from
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
- * rule built at construction (mf__gtr_mix_init); NDF sampling by the
- * closed-form inverse CDF; visible normals by the exact numerical inversion
- * of 07_numeric_vndf.h. Everything but the constructor is cold. */
+ * rule built at construction (mf__gtr_mix_init); NDF and visible-normal
+ * sampling by exact rejection from GGX or from a mixture of GGX lobes
+ * (mf__gtr_sample), falling back on the closed-form inverse CDF and the
+ * exact numerical inversion of 07_numeric_vndf.h. Everything but the
+ * constructor is cold. */
 MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p);
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
@@ -4015,13 +4017,9 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
     return lwL * mf__x_over_expm1(k * L) / mf__x_over_expm1(k * L * lwL);
 }
 
-MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
-{
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), mf__gtr_tan2(d, t, MF_R(1.0) - t), u2);
-}
-
-/* Visible normals, exact, by one of (mf__gtr_sampler_init chooses):
+/* Visible normals (vis = 1, density D_w) and normals of density D cos
+ * (vis = 0, w unused: the same with Lambda = 0), exact, by one of
+ * (mf__gtr_sampler_init chooses):
  * - gamma = 2, gamma = 0, alpha = 1: GGX of alpha, 1, 1 (the same D);
  * - gamma in (0, 2) where the GGX proposal below has K > 1.5 (alpha below
  *   about 0.15): the slope density (1+x)^(gamma-2) (a^2+x)^-gamma is the
@@ -4040,30 +4038,36 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  * Normals facing away from w (float rounding at the cap's edge) are drawn
  * again. The first proposal uses (u1, u2), further draws the stream of
  * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
- * numerical inversion of 07_numeric_vndf.h answers. */
-MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+ * numerical inversion of 07_numeric_vndf.h answers (the closed-form inverse
+ * CDF for vis = 0). */
+MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_real q = MF_R(1.0) - u1;
+    return vis ? mf_ggx_sample_visible(a, a, w, u1, u2) : mf__wm_from_slope_u(a, a, q > MF_R(0.0) ? u1 / q : MF_BIG, u2);
+}
+MF_INLINE mf_vec3 mf__gtr_sample(const mf_ndf *d, int vis, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
     mf_real a2 = d->ax * d->ax, g = p->gamma, L = p->L;
     unsigned int st;
     int it = 0, fresh = 1;
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    if (p->vmode == 0) return mf_ggx_sample_visible(p->vs[0], p->vs[0], w, u1, u2);
-    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (p->vmode == 0) return mf__gtr_ggx(p->vs[0], vis, w, u1, u2);
+    if (vis && !(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     st = mf__stream_seed(u1, u2);
     if (p->vmode == 2) {
         mf_real ap = p->vs[0], ap2 = ap * ap;
-        m = mf_ggx_sample_visible(ap, ap, w, u1, u2);
+        m = mf__gtr_ggx(ap, vis, w, u1, u2);
         for (it = 0; it < 64; ++it) {
             /* D / (K D_GGX) = cK ((1+x)/(a^2+x))^(gamma-2) ((ap^2+x)/(a^2+x))^2, x = s2/c2 */
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
             r = p->vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
-            if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
-            m = mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
+            if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && (!vis || mf_dot(w, m) > MF_R(0.0))) break;
+            m = mf__gtr_ggx(ap, vis, w, mf__stream_next(&st), mf__stream_next(&st));
         }
     } else {
         mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), a = d->ax, th, c0, W[5], tot;
-        th = sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
+        th = !vis ? MF_R(0.0) : sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
         c0 = MF_R(1.0) + th * a;
         W[0] = c0 * p->vs[0]; W[1] = th * p->vs[1]; W[2] = c0 * p->vs[2]; W[3] = th * p->vs[3];
         W[4] = (MF_R(1.0) + th) / g;
@@ -4093,16 +4097,26 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
             /* (1 + Lambda_b) = (1 + sqrt(1 + b t^2)) / 2 */
             if (mf__stream_next(&st) * bound < fe * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * b))) {
                 mf_real ab = MF_SQRT(b);
-                m = fresh ? mf_ggx_sample_visible(ab, ab, w, u1, u2)
-                          : mf_ggx_sample_visible(ab, ab, w, mf__stream_next(&st), mf__stream_next(&st));
+                m = fresh ? mf__gtr_ggx(ab, vis, w, u1, u2)
+                          : mf__gtr_ggx(ab, vis, w, mf__stream_next(&st), mf__stream_next(&st));
                 fresh = 0;
-                if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
+                if (m.z > MF_R(0.0) && (!vis || mf_dot(w, m) > MF_R(0.0))) break;   /* float's cap edge: draw again */
             }
         }
     }
     MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
     if (it < 64) return m;
-    return mf__iso_sample_visible_view(d, MF_R(1.0), MF_R(1.0), w, u1, u2);
+    if (vis) return mf__iso_sample_visible_view(d, MF_R(1.0), MF_R(1.0), w, u1, u2);
+    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));   /* the closed-form inverse CDF */
+    return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), mf__gtr_tan2(d, u1, MF_R(1.0) - u1), u2);
+}
+MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    return mf__gtr_sample(d, 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), u1, u2);
+}
+MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    return mf__gtr_sample(d, 1, w, u1, u2);
 }
 
 /* The visible sampler's mode and constants (see mf__gtr_sample_visible).
