@@ -24,7 +24,7 @@ typedef struct mf_ndf_gtr {
     int nq;             /* nodes of the mixture rule */
     int vmode;          /* visible sampler: 0 GGX of alpha vs[0], 1 GGX mixture, 2 rejection from GGX */
     mf_real qb[MF__GTR_NQ], qw[MF__GTR_NQ];   /* mixture nodes alpha_b^2 and weights */
-    mf_real vs[6];      /* the sampler's constants (mf__gtr_sampler_init) */
+    mf_real vs[10];     /* the sampler's constants (mf__gtr_sampler_init) */
 } mf_ndf_gtr;
 /* @api */
 MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p);
@@ -285,9 +285,9 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
  *   normals of a mixture: b with weight f(z) (1 + Lambda_b(w)) (each
  *   component's projected area), then b's GGX VNDF. z is drawn by rejection
  *   from the envelope f <= z^(1-g)/a^2, z^-g, z^(-1-g) on [0, a^2], [a^2, 1],
- *   [1, inf) times 1 + Lambda_b <= 1 + (t/2)(a + sqrt z) below 1, 1 + t/2
- *   above (t = tan theta_w, sqrt b <= a + sqrt z): five power laws, each
- *   inverted in closed form; accepted 45-80% of the time;
+ *   [1, inf) times 1 + Lambda_b = (1 + sqrt(1 + b t^2))/2 <= 1 + Lambda_{a^2}
+ *   + (t/2) sqrt z below 1 (b <= a^2 + z), 1 + Lambda_1 above (t = tan
+ *   theta_w): five power laws, each inverted in closed form;
  * - otherwise (gamma in (2, 4], or below 2 with K <= 1.5): rejection from
  *   GGX's VNDF of alpha_p (mf__gtr_sampler_init), accepting with D / (K D_GGX)
  *   (the max(0, w.m) factor cancels), K = sup D / D_GGX <= 1.27 above gamma 2.
@@ -322,36 +322,42 @@ MF_INLINE mf_vec3 mf__gtr_sample(const mf_ndf *d, int vis, mf_vec3 w, mf_real u1
             m = mf__gtr_ggx(ap, vis, w, mf__stream_next(&st), mf__stream_next(&st));
         }
     } else {
-        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), a = d->ax, th, c0, W[5], tot;
+        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), th, c0, c1, W[5], tot;
         th = !vis ? MF_R(0.0) : sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
-        c0 = MF_R(1.0) + th * a;
+        /* 1 + Lambda_b at b = a^2 and at b = 1 */
+        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * a2));
+        c1 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th));
         W[0] = c0 * p->vs[0]; W[1] = th * p->vs[1]; W[2] = c0 * p->vs[2]; W[3] = th * p->vs[3];
-        W[4] = (MF_R(1.0) + th) / g;
+        W[4] = c1 / g;
         tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u = MF_R(1.0) - mf__stream_next(&st), z, b, fe, bound;
+            mf_real x = mf__stream_next(&st) * tot, u, z, b, num, den, bound;
             int k;
             for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
+            u = MF_R(1.0) - mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in (0, 1] */
             if (k == 4) {                        /* [1, inf), in 1/z = u^(1/gamma) */
-                mf_real iz = MF_EXP(MF_LOG(u) / g);
-                b = (a2 * iz + MF_R(1.0)) / (iz + MF_R(1.0));
-                fe = MF_R(1.0) / ((MF_R(1.0) + a2 * iz) * (MF_R(1.0) + iz));
-                bound = MF_R(1.0) + th;
+                mf_real iz = MF_EXP(MF_LOG(u) * p->vs[9]);
+                den = MF_R(1.0) + iz;
+                b = (a2 * iz + MF_R(1.0)) / den;
+                num = MF_R(1.0);                 /* f/e = num/den = 1 / ((1 + a^2/z)(1 + 1/z)) */
+                den *= MF_R(1.0) + a2 * iz;
+                bound = c1;
             } else {
                 mf_real lz;
                 if (k < 2)                       /* [0, a^2]: z = a^2 u^(1/q) */
-                    lz = L + MF_LOG(u) / ((k == 0 ? MF_R(2.0) : MF_R(2.5)) - g);
-                else {                           /* [a^2, 1]: log z = L (1 - u log1p(u e)/(u e) / r) */
-                    mf_real e = k == 2 ? p->EM : p->vs[4], r = k == 2 ? p->RMK : p->vs[5];
-                    lz = L * (MF_R(1.0) - u * mf__log1p_over_x(u * e) / r);
+                    lz = L + MF_LOG(u) * p->vs[7 + k];
+                else {                           /* [a^2, 1]: z^q = a^(2q) (1 + u expm1(-qL)) */
+                    mf_real iq = p->vs[k == 2 ? 6 : 5];
+                    lz = iq != MF_R(0.0) ? L + MF_LOG1P(u * (k == 2 ? p->EM : p->vs[4])) * iq : L * (MF_R(1.0) - u);
                 }
                 z = MF_EXP(lz);
-                b = (a2 + z) / (MF_R(1.0) + z);
-                fe = (k < 2 ? a2 : z) / ((a2 + z) * (MF_R(1.0) + z));
+                den = MF_R(1.0) + z;
+                b = (a2 + z) / den;
+                num = k < 2 ? a2 : z;            /* f/e = a^2 or z over (a^2 + z)(1 + z) */
+                den *= a2 + z;
                 bound = c0 + th * MF_SQRT(z);
             }
-            /* (1 + Lambda_b) = (1 + sqrt(1 + b t^2)) / 2 */
-            if (mf__stream_next(&st) * bound < fe * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * b))) {
+            if (mf__stream_next(&st) * bound * den < num * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * b))) {
                 mf_real ab = MF_SQRT(b);
                 m = fresh ? mf__gtr_ggx(ab, vis, w, u1, u2)
                           : mf__gtr_ggx(ab, vis, w, mf__stream_next(&st), mf__stream_next(&st));
@@ -378,8 +384,9 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
 /* The visible sampler's mode and constants (see mf__gtr_sample_visible).
  * Mixture (gamma in (0, 2)): vs[0..3] the envelope's masses
  * a^(2(1-g))/(2-g), a^(3-2g)/(5/2-g) on [0, a^2] and -L/r(qL), q = 1-g, 3/2-g,
- * on [a^2, 1] (r(x) = x/expm1(x)), vs[4], vs[5] = expm1(-qL), r(-qL) for
- * q = 3/2 - g (q = 1 - g: p->EM, p->RMK). Rejection:
+ * on [a^2, 1] (r(x) = x/expm1(x)); vs[4] = expm1(-qL) for q = 3/2 - g
+ * (q = 1 - g: p->EM); vs[5], vs[6] = 1/q for q = 3/2 - g, 1 - g (0 for
+ * q = 0, where log z = L (1 - u)); vs[7..9] = 1/(2 - g), 1/(5/2 - g), 1/g. Rejection:
  * vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max of the ratio at
  * x = 0, infinity and its one stationary point. */
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
@@ -412,5 +419,9 @@ MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
     p->vs[2] = -L / p->RK;
     p->vs[3] = -L / mf__x_over_expm1(q3 * L);
     p->vs[4] = MF_EXPM1(-q3 * L);
-    p->vs[5] = mf__x_over_expm1(-q3 * L);
+    p->vs[5] = q3 != MF_R(0.0) ? MF_R(1.0) / q3 : MF_R(0.0);
+    p->vs[6] = g != MF_R(1.0) ? MF_R(1.0) / (MF_R(1.0) - g) : MF_R(0.0);
+    p->vs[7] = MF_R(1.0) / (MF_R(2.0) - g);
+    p->vs[8] = MF_R(1.0) / (MF_R(2.5) - g);
+    p->vs[9] = MF_R(1.0) / g;
 }

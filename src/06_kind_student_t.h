@@ -124,7 +124,8 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  *   of alpha_b^2 = b = (g-1)(1 + z)/z with weight f(z) = z^(g-2) / (1 + z).
  *   As for GTR (mf__gtr_sample_visible), b with weight f (1 + Lambda_b(w)),
  *   then b's GGX VNDF; z by rejection from f <= z^(g-2), z^(g-3) on (0, 1],
- *   [1, inf) times 1 + Lambda_b <= 1 + (t/2) sqrt(g-1) (1 + z^-1/2): four
+ *   [1, inf) times 1 + Lambda_b <= 1 + Lambda_{g-1} + (t/2) sqrt(g-1) z^-1/2
+ *   (sqrt(x + y) <= sqrt x + sqrt y): four
  *   power laws (integrable because g > 3/2). Components beyond
  *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
  *   that b.
@@ -155,22 +156,24 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     } else {
         mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, c0, W[4], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
         th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
-        c0 = MF_R(1.0) + th * sg;
+        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1));   /* 1 + Lambda at b = g - 1 */
         W[0] = c0 / g1; W[1] = th * sg / (g - MF_R(1.5));
         W[2] = c0 / (MF_R(2.0) - g); W[3] = th * sg / (MF_R(2.5) - g);
         tot = W[0] + W[1] + W[2] + W[3];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u = MF_R(1.0) - mf__stream_next(&st), lz, iz, rho, fe, b1;
+            mf_real x = mf__stream_next(&st) * tot, u, lz, iz, rho, b1;
             int k;
             for (k = 0; k < 3 && x >= W[k]; ++k) x -= W[k];
+            u = MF_R(1.0) - mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in (0, 1] */
             /* z = u^(1/q), q = g-1, g-3/2 on (0, 1], g-2, g-5/2 on [1, inf) */
             lz = mf_max(MF_LOG(u) / (g - MF_R(1.0) - MF_R(0.5) * (mf_real)k), lzmin);
             iz = MF_EXP(-lz);                       /* 1/z */
             rho = MF_SQRT(iz);
-            fe = k < 2 ? MF_R(1.0) / (MF_R(1.0) + MF_R(1.0) / iz) : MF_R(1.0) / (MF_R(1.0) + iz);
             b1 = MF_R(1.0) + iz;                    /* b / (g-1) */
-            /* (1 + Lambda_b) = (1 + sqrt(1 + b t^2)) / 2 against its bound c0 + (t/2) sqrt(g-1) z^-1/2 */
-            if (mf__stream_next(&st) * (c0 + th * sg * rho) < fe * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1 * b1))) {
+            /* f/e = 1/(1+z) = (1/z)/b1 or z/(1+z) = 1/b1, times (1 + Lambda_b) =
+             * (1 + sqrt(1 + b t^2)) / 2 against its bound */
+            if (mf__stream_next(&st) * (c0 + th * sg * rho) * b1 <
+                (k < 2 ? iz : MF_R(1.0)) * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
                 m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
                           : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));

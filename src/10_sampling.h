@@ -40,6 +40,8 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
     u1 = mf__u01(u1); u2 = mf__u01(u2);
     if (!d->transformed) {
         if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+        if (d->type == MF_NDF_GTR) return mf__gtr_sample_visible(d, w, u1, u2);
+        if (d->type == MF_NDF_STUDENT_T) return mf__student_t_sample_visible(d, w, u1, u2);
         return mf__ndf_sample_visible(d, w, u1, u2);
     }
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
