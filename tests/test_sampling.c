@@ -33,9 +33,17 @@ static double density(mf_vec3 m, void *p)
 
 static double worst_z = -1e9;
 
+/* 1: GTR and Student-t visible normals from the exact numerical inversion
+ * (07_numeric_vndf.h) the rejection samplers fall back on */
+static int numeric_vndf;
+
 static mf_vec3 draw(const mf_ndf *d, mf_vec3 v, int visible, mft_rng *r)
 {
     double u1 = mft_u01(r), u2 = mft_u01(r);
+    if (visible && numeric_vndf) {
+        int gtr = d->type == MF_NDF_GTR;
+        return mf__iso_sample_visible_view(d, gtr ? MF_R(1.0) : d->ax, gtr ? MF_R(1.0) : d->ay, v, (mf_real)u1, (mf_real)u2);
+    }
     return visible ? mf_sample_visible(d, v, (mf_real)u1, (mf_real)u2) : mf_sample_D(d, (mf_real)u1, (mf_real)u2);
 }
 
@@ -81,6 +89,33 @@ void mft_sampler_check(const char *name, const mf_ndf *d, mf_vec3 v, int visible
     MFT_CHECK(z < 5.0, msg);
     snprintf(msg, sizeof msg, "samples are unit vectors %s", name);
     MFT_CHECK(bad == 0, msg);
+}
+
+/* The GTR and Student-t samplers (rejection from GGX, or from GGX mixtures
+ * at small alpha) over a grid of alpha, gamma and views, both modes and the
+ * switch between them (GTR alpha 0.15 / 0.3 below gamma 2). */
+static void gtr_student_grid(void)
+{
+    const double ag[] = { 1e-3, 0.01, 0.05, 0.15, 0.3, 1.0 }, gg[] = { 0.0, 0.5, 1.0, 1.45, 1.5, 1.9, 2.5, 3.0, 3.7, 4.0 };
+    const double as[] = { 1e-3, 0.05, 0.3, 1.0 }, gs[] = { 1.6, 1.75, 1.9, 2.5, 4.0, 30.0, 1000.0 };
+    int i, j, n = 0;
+    char name[64];
+    for (i = 0; i < 6; ++i)
+        for (j = 0; j < 10; ++j, ++n) {
+            mf_ndf d = mf_gtr((mf_real)ag[i], (mf_real)gg[j]);
+            snprintf(name, sizeof name, "grid gtr_%g_g%g", ag[i], gg[j]);
+            mft_sampler_check(name, &d, mf_vec3_make(0, 0, 1), 0, 20000, 0, 7000 + n);
+            mft_sampler_check(name, &d, mft_dir(0.7, 0.2), 1, 20000, 0, 7300 + n);
+            mft_sampler_check(name, &d, mft_dir(1.45, 1.1), 1, 20000, 0, 7600 + n);
+        }
+    for (i = 0; i < 4; ++i)
+        for (j = 0; j < 7; ++j, ++n) {
+            mf_ndf d = mf_student_t((mf_real)as[i], (mf_real)(as[i] * (j & 1 ? 0.5 : 1.0)), (mf_real)gs[j]);
+            snprintf(name, sizeof name, "grid student_%g_g%g", as[i], gs[j]);
+            mft_sampler_check(name, &d, mf_vec3_make(0, 0, 1), 0, 20000, 0, 7000 + n);
+            mft_sampler_check(name, &d, mft_dir(0.7, 0.2), 1, 20000, 0, 7300 + n);
+            mft_sampler_check(name, &d, mft_dir(1.45, 1.1), 1, 20000, 0, 7600 + n);
+        }
 }
 
 static void gtr_student_points(void)
@@ -226,7 +261,13 @@ void test_sampling(void)
         for (j = 0; j < 4; ++j)
             mft_sampler_check(cs->name, &d, mft_dir(thetas[j], 0.4 + j), 1, n, 0, 100 + 7 * i + j);
     }
-    if (!only || strstr("gtr_student", only)) gtr_student_points();
+    if (!only || strstr("gtr_student", only)) {
+        gtr_student_points();
+        numeric_vndf = 1;   /* the same points through the fallback inversion */
+        gtr_student_points();
+        numeric_vndf = 0;
+        gtr_student_grid();
+    }
     if (!only || strstr("beckmann_vndf", only)) { beckmann_slope_cdf_check(); beckmann_grazing_check(); beckmann_normal_check(); }
     printf("    worst chi-square z over all sampling tests: %.2f (fail above 5)\n", worst_z);
 }
