@@ -18,6 +18,8 @@ void *mft_malloc(size_t n);
 void mft_free(void *p);
 /* ... and reports the iterations of every solver loop (test_fuzzfound.c) */
 void mft_solver_done(int site, int it, int cap);
+/* calls and proposals of the GTR / Student-t rejection samplers (MF__SITE_REJECT) */
+extern long mft_reject_calls, mft_reject_tries;
 #ifdef __cplusplus
 }
 #endif

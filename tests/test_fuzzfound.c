@@ -480,9 +480,11 @@ static void allocator_and_sizes(void)
 
 static long mft_sv_calls[MF__SITE_COUNT], mft_sv_capped[MF__SITE_COUNT];
 static int mft_sv_max[MF__SITE_COUNT], mft_sv_cap[MF__SITE_COUNT];
+long mft_reject_calls, mft_reject_tries;
 void mft_solver_done(int site, int it, int cap)
 {
     if (site < 0 || site >= MF__SITE_COUNT) return;
+    if (site == MF__SITE_REJECT) { ++mft_reject_calls; mft_reject_tries += it + 1; }
     ++mft_sv_calls[site];
     if (it > mft_sv_max[site]) mft_sv_max[site] = it;
     if (it >= cap) ++mft_sv_capped[site];

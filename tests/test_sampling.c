@@ -100,6 +100,8 @@ static void gtr_student_grid(void)
     const double as[] = { 1e-3, 0.05, 0.3, 1.0 }, gs[] = { 1.6, 1.75, 1.9, 2.5, 4.0, 30.0, 1000.0 };
     int i, j, n = 0;
     char name[64];
+    double worst = 0.0;
+    mft_reject_calls = mft_reject_tries = 0;
     for (i = 0; i < 6; ++i)
         for (j = 0; j < 10; ++j, ++n) {
             mf_ndf d = mf_gtr((mf_real)ag[i], (mf_real)gg[j]);
@@ -116,6 +118,31 @@ static void gtr_student_grid(void)
             mft_sampler_check(name, &d, mft_dir(0.7, 0.2), 1, 20000, 0, 7300 + n);
             mft_sampler_check(name, &d, mft_dir(1.45, 1.1), 1, 20000, 0, 7600 + n);
         }
+    /* proposals per sample (pilot samples included), per distribution and overall */
+    for (i = 0; i < 6 * 10 + 4 * 7; ++i) {
+        mf_ndf d = i < 60 ? mf_gtr((mf_real)ag[i / 10], (mf_real)gg[i % 10]) : mf_student_t((mf_real)as[(i - 60) / 7], (mf_real)as[(i - 60) / 7], (mf_real)gs[(i - 60) % 7]);
+        mft_rng r;
+        long c0 = mft_reject_calls, t0 = mft_reject_tries;
+        int s, v;
+        mft_seed(&r, 91 + i);
+        for (v = 0; v < 4; ++v)
+            for (s = 0; s < 2000; ++s) {
+                mf_vec3 w = mft_dir(v == 3 ? 1.56 : 0.5 * v, 0.3);
+                (void)mf_sample_visible(&d, w, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                (void)mf_sample_D(&d, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+            }
+        if (mft_reject_calls > c0) {
+            double m = (double)(mft_reject_tries - t0) / (double)(mft_reject_calls - c0);
+            if (m > worst) worst = m;
+        }
+    }
+    {
+        char msg[160];
+        snprintf(msg, sizeof msg, "rejection samplers: %.2f proposals per sample on average, worst distribution %.2f",
+                 (double)mft_reject_tries / (double)(mft_reject_calls > 0 ? mft_reject_calls : 1), worst);
+        if (mft_verbose) printf("    %s\n", msg);
+        MFT_CHECK(mft_reject_calls > 0 && worst < 2.1, msg);
+    }
 }
 
 static void gtr_student_points(void)
