@@ -207,8 +207,11 @@
  *          under -ffast-math. Energy compensation for conductors and
  *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
- *          mixture, built by mf_gtr: mf_ndf is larger, 288 bytes in float);
- *          no lost samples at grazing views for any kind. LTC: rational
+ *          mixture, built by mf_gtr: mf_ndf is larger, 328 bytes in float,
+ *          632 in double); GTR and Student-t NDF and visible-normal sampling
+ *          by exact rejection from GGX and from exact GGX mixtures (3 to 5.5
+ *          GGX samples per sample; was 115-160); no lost samples at grazing
+ *          views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
  *          middle entry (the published texture layout: the raw data of
  *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed
@@ -1490,8 +1493,9 @@ MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1,
  * gamma 1.55 to 1000, alpha 1e-4 to 1, to 89.9 deg: 1.4e-10 relative in
  * double; in float the head - tail difference cancels: 4.4e-3 relative where
  * Lambda > 1e-4, 4e-4 on 1 + Lambda); NDF sampling by the closed-form inverse CDF;
- * visible normals by the exact numerical inversion of 07_numeric_vndf.h.
- * Everything but the constructor is cold. */
+ * visible normals by exact rejection from GGX or from an exact GGX mixture
+ * (mf__student_t_sample_visible), falling back on the exact numerical
+ * inversion of 07_numeric_vndf.h. Everything but the constructor is cold. */
 /* Student's t-distribution of slopes (STD), anisotropic. gamma in
  * [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] (clamped). */
 MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
@@ -1594,7 +1598,8 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
 /* == 7. Numerical visible-normal sampling of the heavy-tailed kinds        */
 /* ======================================================================== */
 /* An exact inversion of the distribution of visible normals for isotropic
- * kinds known through their NDF-sampling CDF (GTR, Student-t): the marginal
+ * kinds known through their NDF-sampling CDF (GTR, Student-t; the fallback of
+ * their rejection samplers after 64 proposals, and under test): the marginal
  * of the D-cos mass by Gauss-Legendre panels, the azimuth given theta in
  * closed form (see mf__iso_sample_visible). Cold. */
 /* wm with density D_w(wm) for the view w of any length (w.z >= 0), of the

@@ -198,8 +198,11 @@
  *          under -ffast-math. Energy compensation for conductors and
  *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
- *          mixture, built by mf_gtr: mf_ndf is larger, 288 bytes in float);
- *          no lost samples at grazing views for any kind. LTC: rational
+ *          mixture, built by mf_gtr: mf_ndf is larger, 328 bytes in float,
+ *          632 in double); GTR and Student-t NDF and visible-normal sampling
+ *          by exact rejection from GGX and from exact GGX mixtures (3 to 5.5
+ *          GGX samples per sample; was 115-160); no lost samples at grazing
+ *          views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
  *          middle entry (the published texture layout: the raw data of
  *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed

@@ -8,8 +8,9 @@
  * gamma 1.55 to 1000, alpha 1e-4 to 1, to 89.9 deg: 1.4e-10 relative in
  * double; in float the head - tail difference cancels: 4.4e-3 relative where
  * Lambda > 1e-4, 4e-4 on 1 + Lambda); NDF sampling by the closed-form inverse CDF;
- * visible normals by the exact numerical inversion of 07_numeric_vndf.h.
- * Everything but the constructor is cold. */
+ * visible normals by exact rejection from GGX or from an exact GGX mixture
+ * (mf__student_t_sample_visible), falling back on the exact numerical
+ * inversion of 07_numeric_vndf.h. Everything but the constructor is cold. */
 /* @decl */
 typedef struct mf_ndf_student_t {
     mf_real gamma;      /* in [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] */

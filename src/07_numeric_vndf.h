@@ -2,7 +2,8 @@
 /* == 7. Numerical visible-normal sampling of the heavy-tailed kinds        */
 /* ======================================================================== */
 /* An exact inversion of the distribution of visible normals for isotropic
- * kinds known through their NDF-sampling CDF (GTR, Student-t): the marginal
+ * kinds known through their NDF-sampling CDF (GTR, Student-t; the fallback of
+ * their rejection samplers after 64 proposals, and under test): the marginal
  * of the D-cos mass by Gauss-Legendre panels, the azimuth given theta in
  * closed form (see mf__iso_sample_visible). Cold. */
 /* @api */
