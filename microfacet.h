@@ -4,8 +4,8 @@
  *   06_kind_beckmann.h 06_kind_ggx.h 06_kind_gtr.h 06_kind_leadr.h
  *   06_kind_student_t.h 06_kind_tabulated.h 07_numeric_vndf.h 08_transform.h
  *   09_smith.h 10_sampling.h 11_brdf.h 11_dielectric.h 12_leadr.h 13_ltc.h
- *   14_ltc_table.h 15_ibm.h 16_microsurface.h 17_energy_table.h 18_energy.h
- *   99_outro.h
+ *   13_ltc_shapes.h 14_ltc_table.h 15_ibm.h 16_microsurface.h
+ *   17_energy_table.h 18_energy.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
  * Version 0.3.0.  MIT licensed (see the end of this file).
@@ -2967,6 +2967,227 @@ MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_fresnel(mf_real cos_theta_o, mf_real alpha);
 MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
 #endif
+/* ======================================================================== */
+/* == 13b. LTC light shapes: ellipses, disks, lines, tubes, textured quads  */
+/* ======================================================================== */
+/* Heitz & Hill 2017 (disks, lines: "Real-Time Line- and Disk-Light Shading
+ * with Linearly Transformed Cosines", SIGGRAPH course; "Linear-Light Shading
+ * with LTC", GPU Zen) and Heitz et al. 2016 Sec. 5.3 (textured polygons).
+ * Every shape is integrated in the cosine space of the LTC: points move by
+ * M^-1, an ellipse stays an ellipse and a line stays a line. Positions are
+ * relative to the shading point, in the frame of the LTC (z = normal). Bad
+ * input (NaN, zero axes, a light through the shading point) gives 0. */
+
+/* The cone from the origin through the ellipse c + u cos t + v sin t: w is
+ * inside when w = s (c + a u + b v), s > 0, a^2 + b^2 <= 1. With B = [u v c]
+ * and its cofactor rows n1 = v x c, n2 = c x u, n3 = u x v (B^-1 = rows / det B),
+ * its dual quadric is P = B diag(1, 1, -1) B^T = u u^T + v v^T - c c^T, of
+ * eigenvalues p1, p2 > 0 > p3 (Sylvester); the eigenvector of p3 is the axis
+ * of the (right, elliptic) cone, whose half-angle tangents are
+ * sqrt(p1 / -p3) and sqrt(p2 / -p3). The cosine form factor of a right
+ * elliptic cone of tangents t1, t2 about its axis is
+ * t1 t2 / sqrt((1 + t1^2)(1 + t2^2)) (the disk of radius t: t^2 / (1 + t^2),
+ * sin^2 of its half-angle), which with p1 p2 p3 = det P = -(det B)^2 and
+ * p1 + p2 = tr P - p3 is
+ *   |det B| / sqrt(2 |p3|^3 + p3^2 tr P + (det B)^2),
+ * free of p1 and p2. p3 is the single negative root of the characteristic
+ * cubic x^3 - tr x^2 + e2 x + (det B)^2 (e2 = |n3|^2 - |n1|^2 - |n2|^2,
+ * Cauchy-Binet), found by Newton's method from below (-|c|^2 <= p3: the
+ * iterates rise monotonically, the cubic being concave there), so that small
+ * and huge ellipses keep their relative accuracy. Heitz & Hill 2017 reach the
+ * same cone through the ellipse's principal axes and a cubic of their own. */
+MF__LTC_RARE mf_real mf__ellipse_cone(mf_vec3 c, mf_vec3 u, mf_vec3 v, mf_vec3 *axis)
+{
+    mf_real s = mf_max(mf_max(mf_dot(c, c), mf_dot(u, u)), mf_dot(v, v)), det, tr, e2, d2, x, f, df, den, ff;
+    mf_vec3 n1, n2, n3, r0, r1, r2, a0, a1, a2;
+    mf_real P[6];   /* xx yy zz xy xz yz */
+    int i;
+    *axis = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (!(s > MF_R(0.0)) || !(s < MF_BIG)) return MF_R(0.0);
+    s = MF_R(1.0) / MF_SQRT(s);   /* the form factor is scale-free: largest length 1 */
+    c = mf_scale(c, s); u = mf_scale(u, s); v = mf_scale(v, s);
+    n1 = mf_cross(v, c); n2 = mf_cross(c, u); n3 = mf_cross(u, v);
+    det = mf_dot(c, n3);
+    d2 = det * det;
+    if (!(d2 > MF_R(0.0))) return MF_R(0.0);   /* edge-on, or degenerate axes */
+    tr = mf_dot(u, u) + mf_dot(v, v) - mf_dot(c, c);
+    e2 = mf_dot(n3, n3) - mf_dot(n1, n1) - mf_dot(n2, n2);
+    x = -mf_dot(c, c);
+    for (i = 0; i < 60; ++i) {
+        f = ((x - tr) * x + e2) * x + d2;
+        df = (MF_R(3.0) * x - MF_R(2.0) * tr) * x + e2;
+        if (!(df > MF_R(0.0))) break;
+        den = f / df;
+        if (!(den < MF_R(0.0))) break;      /* at (or, rounded, past) the root */
+        x -= den;
+        if (!(x < MF_R(0.0))) return MF_R(0.0);
+        if (-den <= MF_R(4.0) * MF_EPS * -x) break;
+    }
+    x = mf_min(x, -MF_EPS * MF_EPS);
+    den = MF_R(2.0) * -x * x * x + x * x * tr + d2;
+    if (!(den > MF_R(0.0))) return MF_R(0.0);
+    ff = MF_FABS(det) / MF_SQRT(den);
+    /* the axis: null vector of P - p3 I, the largest cross product of two rows */
+    P[0] = u.x * u.x + v.x * v.x - c.x * c.x - x; P[1] = u.y * u.y + v.y * v.y - c.y * c.y - x;
+    P[2] = u.z * u.z + v.z * v.z - c.z * c.z - x; P[3] = u.x * u.y + v.x * v.y - c.x * c.y;
+    P[4] = u.x * u.z + v.x * v.z - c.x * c.z; P[5] = u.y * u.z + v.y * v.z - c.y * c.z;
+    r0 = mf_vec3_make(P[0], P[3], P[4]); r1 = mf_vec3_make(P[3], P[1], P[5]); r2 = mf_vec3_make(P[4], P[5], P[2]);
+    a0 = mf_cross(r0, r1); a1 = mf_cross(r1, r2); a2 = mf_cross(r2, r0);
+    if (mf_dot(a1, a1) > mf_dot(a0, a0)) a0 = a1;
+    if (mf_dot(a2, a2) > mf_dot(a0, a0)) a0 = a2;
+    if (!(mf_dot(a0, a0) > MF_R(0.0))) a0 = c;
+    a0 = mf_normalize(a0);
+    /* inside the cone: on the side of the ellipse's plane where c is */
+    if (mf_dot(a0, n3) * det < MF_R(0.0)) a0 = mf_scale(a0, MF_R(-1.0));
+    *axis = a0;
+    return mf_min(ff, MF_R(1.0));
+}
+
+/* Vector form factor of the ellipse c + u cos t + v sin t (not clipped; the
+ * disk of radius r: u, v orthogonal of length r): F.z is its cosine form
+ * factor, |F| and F / |F| feed mf_sphere_form_factor. As for polygons, the
+ * front face is the one seen counterclockwise (u x v towards the shading
+ * point); F points away from a back face. */
+MF_INLINE mf_vec3 mf_ellipse_vector_form_factor(mf_vec3 c, mf_vec3 u, mf_vec3 v)
+{
+    mf_vec3 a;
+    mf_real ff = mf__ellipse_cone(c, u, v, &a);
+    if (mf_dot(c, mf_cross(u, v)) > MF_R(0.0)) ff = -ff;
+    return mf_scale(a, ff);
+}
+
+/* Integral of D over the ellipse (Heitz & Hill 2017): its vector form factor
+ * in the cosine space, exact (the cone's F.z) when the transformed ellipse
+ * lies above the horizon, the horizon-clipped sphere of the same vector form
+ * factor (mf_sphere_form_factor) when it crosses it, 0 below. */
+MF_INLINE mf_real mf_ltc_integrate_ellipse(const mf_ltc *l, mf_vec3 center, mf_vec3 axis_u, mf_vec3 axis_v,
+                                           int two_sided)
+{
+    mf_vec3 c = mf__mat3_apply(l->Minv, center), u = mf__mat3_apply(l->Minv, axis_u), v = mf__mat3_apply(l->Minv, axis_v), a;
+    mf_real ez = MF_SQRT(u.z * u.z + v.z * v.z), ff;
+    if (!two_sided && !(mf_dot(c, mf_cross(u, v)) < MF_R(0.0))) return MF_R(0.0);   /* back face */
+    if (!(c.z + ez > MF_R(0.0))) return MF_R(0.0);                                  /* below (or NaN) */
+    ff = mf__ellipse_cone(c, u, v, &a);
+    if (c.z - ez >= MF_R(0.0)) return mf_max(ff * a.z, MF_R(0.0));
+    return mf_sphere_form_factor(mf_scale(a, ff));
+}
+
+/* The same for a disk of the given center, radius and unit normal: the face
+ * normal points to is the front. */
+MF_INLINE mf_real mf_ltc_integrate_disk(const mf_ltc *l, mf_vec3 center, mf_vec3 normal, mf_real radius, int two_sided)
+{
+    mf_vec3 t, b, n;
+    mf_real len = MF_SQRT(mf_dot(normal, normal));
+    if (!(len > MF_R(0.0)) || !(len < MF_BIG) || !(radius > MF_R(0.0)) || !(radius < MF_BIG)) return MF_R(0.0);
+    n = mf_scale(normal, MF_R(1.0) / len);
+    mf_frame(n, &t, &b);
+    if (mf_dot(mf_cross(t, b), n) < MF_R(0.0)) b = mf_scale(b, MF_R(-1.0));   /* t x b = n */
+    return mf_ltc_integrate_ellipse(l, center, mf_scale(t, radius), mf_scale(b, radius), two_sided);
+}
+
+/* Cosine-lobe integral of a line segment p1 p2 per unit width (Heitz & Hill
+ * 2017 Eq. 1.20): (1/pi) int max(0, w.z) |w x T| / |p|^2 dl, clipped at the
+ * horizon. With T the unit tangent, l1, l2 = p.T at the ends, d the distance
+ * of the line and p0 its nearest point, in closed form
+ *   (1/2pi) [ (p0.z/d) (l2/|p2|^2 - l1/|p1|^2 + theta/d) + T.z d (1/|p1|^2 - 1/|p2|^2) ],
+ * theta the angle p1 p2 subtend (one atan2). (The second term's antiderivative
+ * -d/(d^2 + l^2) corrects the chapter's Eq. 1.23.) */
+MF_INLINE mf_real mf__line_cosine(mf_vec3 p1, mf_vec3 p2)
+{
+    mf_vec3 t, p0;
+    mf_real len, l1, l2, d, r1, r2, th, res;
+    if (!(p1.z > MF_R(0.0)) && !(p2.z > MF_R(0.0))) return MF_R(0.0);
+    if (p1.z < MF_R(0.0)) p1 = mf_scale(mf__vsub(mf_scale(p1, p2.z), mf_scale(p2, p1.z)), MF_R(1.0) / (p2.z - p1.z));
+    else if (p2.z < MF_R(0.0)) p2 = mf_scale(mf__vsub(mf_scale(p2, p1.z), mf_scale(p1, p2.z)), MF_R(1.0) / (p1.z - p2.z));
+    t = mf__vsub(p2, p1);
+    len = MF_SQRT(mf_dot(t, t));
+    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return MF_R(0.0);
+    t = mf_scale(t, MF_R(1.0) / len);
+    l1 = mf_dot(p1, t); l2 = l1 + len;
+    p0 = mf__vsub(p1, mf_scale(t, l1));
+    d = MF_SQRT(mf_dot(mf_cross(p1, t), mf_cross(p1, t)));
+    r1 = mf_dot(p1, p1); r2 = mf_dot(p2, p2);
+    if (!(d > MF_R(0.0)) || !(r1 > MF_R(0.0)) || !(r2 > MF_R(0.0))) return MF_R(0.0);
+    th = MF_ATAN2(d * len, d * d + l1 * l2);
+    res = (p0.z / d) * (l2 / r2 - l1 / r1 + th / d) + t.z * d * (MF_R(1.0) / r1 - MF_R(1.0) / r2);
+    return mf__cap(mf_max(res * MF_R(0.15915494309189533577), MF_R(0.0)));
+}
+
+/* Integral of D over a thin cylinder of the given radius along p1 p2 (Heitz &
+ * Hill 2017): its silhouette, a strip of width 2 radius across the plane of
+ * the line and the shading point (normal n), becomes in the cosine space a
+ * strip of width 2 radius / |M^T n| (first order in the radius), integrated
+ * by mf__line_cosine. Exact as the radius goes to 0, relative error of the
+ * order of radius / distance. No end caps: mf_ltc_integrate_tube. */
+MF_INLINE mf_real mf_ltc_integrate_line(const mf_ltc *l, mf_vec3 p1, mf_vec3 p2, mf_real radius)
+{
+    mf_vec3 n = mf_cross(p1, p2), mt;
+    mf_real nl = MF_SQRT(mf_dot(n, n)), w;
+    if (!(nl > MF_R(0.0)) || !(nl < MF_BIG) || !(radius > MF_R(0.0)) || !(radius < MF_BIG)) return MF_R(0.0);
+    n = mf_scale(n, MF_R(1.0) / nl);
+    mt = mf_vec3_make(l->M[0] * n.x + l->M[3] * n.y + l->M[6] * n.z, l->M[1] * n.x + l->M[4] * n.y + l->M[7] * n.z,
+                      l->M[2] * n.x + l->M[5] * n.y + l->M[8] * n.z);
+    w = MF_SQRT(mf_dot(mt, mt));
+    if (!(w > MF_R(0.0))) return MF_R(0.0);
+    return mf__cap(MF_R(2.0) * radius / w * mf__line_cosine(mf__mat3_apply(l->Minv, p1), mf__mat3_apply(l->Minv, p2)));
+}
+
+/* A closed tube (cylinder with flat end caps, Heitz & Hill 2017): the line
+ * plus the two caps as one-sided disks facing outwards (exact ellipses). */
+MF_INLINE mf_real mf_ltc_integrate_tube(const mf_ltc *l, mf_vec3 p1, mf_vec3 p2, mf_real radius)
+{
+    mf_vec3 t = mf__vsub(p2, p1);
+    mf_real line = mf_ltc_integrate_line(l, p1, p2, radius);
+    if (!(line >= MF_R(0.0))) return MF_R(0.0);
+    return line + mf_ltc_integrate_disk(l, p1, mf_scale(t, MF_R(-1.0)), radius, 0) + mf_ltc_integrate_disk(l, p2, t, radius, 0);
+}
+
+/* Textured quad light (Heitz et al. 2016 Sec. 5.3): for the parallelogram
+ * q[0..3] with texture coordinates (0,0) (1,0) (1,1) (0,1) at q0 q1 q2 q3
+ * (q3 = q0 + q2 - q1 assumed), the integral of D L over it is approximated
+ * by mf_ltc_integrate (returned) times the prefiltered texture fetched at
+ * uv[2] with level of detail *lod. uv: where the direction of the vector form
+ * factor of the quad in the cosine space meets its plane (the orthogonal
+ * projection of the shading point onto the plane when that ray misses it);
+ * affine coordinates survive the linear map, so uv is that of the original
+ * quad; it can leave [0, 1] (prefiltered textures carry a border). lod:
+ * log2(tex_size r / sqrt(A)), the lobe's footprint (r, the distance to the
+ * plane, in units of the quad's size sqrt(A), both in the cosine space) in
+ * texels of a tex_size texture, clamped to [0, log2 tex_size]. */
+MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, int two_sided, mf_real tex_size,
+                                            mf_real *uv, mf_real *lod)
+{
+    mf_vec3 p[4], e1, e2, nrm, F, x;
+    mf_real g11, g12, g22, det, h, s, fn, r1, r2, fp, res;
+    int i;
+    if (uv) uv[0] = uv[1] = MF_R(0.5);
+    if (lod) *lod = MF_R(0.0);
+    if (!q) return MF_R(0.0);
+    res = mf_ltc_integrate(l, q, 4, two_sided);
+    for (i = 0; i < 4; ++i) p[i] = mf__mat3_apply(l->Minv, q[i]);
+    e1 = mf__vsub(p[1], p[0]); e2 = mf__vsub(p[3], p[0]); nrm = mf_cross(e1, e2);
+    g11 = mf_dot(e1, e1); g12 = mf_dot(e1, e2); g22 = mf_dot(e2, e2);
+    det = mf_dot(nrm, nrm);   /* = g11 g22 - g12^2 */
+    h = mf_dot(nrm, p[0]);    /* distance times |nrm| */
+    if (!(det > MF_R(0.0)) || !(det < MF_BIG) || !(h == h)) return res;
+    F = mf_polygon_vector_form_factor(p, 4);
+    fn = mf_dot(F, nrm);
+    s = fn != MF_R(0.0) ? h / fn : MF_R(-1.0);
+    if (s > MF_R(0.0) && s < MF_BIG) x = mf_scale(F, s);
+    else x = mf_scale(nrm, h / det);
+    x = mf__vsub(x, p[0]);
+    r1 = mf_dot(x, e1); r2 = mf_dot(x, e2);
+    if (uv) {
+        mf_real a = (g22 * r1 - g12 * r2) / det, b = (g11 * r2 - g12 * r1) / det;
+        if (a == a && b == b && MF_FABS(a) < MF_BIG && MF_FABS(b) < MF_BIG) { uv[0] = a; uv[1] = b; }
+    }
+    if (lod && tex_size > MF_R(1.0) && tex_size < MF_BIG) {
+        fp = MF_FABS(h) / (MF_SQRT(det) * MF_SQRT(MF_SQRT(det)));   /* r / sqrt(A) = |h| / |nrm|^(3/2) */
+        fp = MF_LOG(mf_max(tex_size * fp, MF_R(1.0))) * MF_R(1.4426950408889634);
+        *lod = mf_clamp(fp, MF_R(0.0), MF_LOG(tex_size) * MF_R(1.4426950408889634));
+    }
+    return res;
+}
 /* Generated by tools/ltc_fit.c (`make ltc-table`): do not edit. */
 /* ======================================================================== */
 /* == 14. The built-in LTC table of GGX                                     */
