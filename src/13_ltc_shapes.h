@@ -165,13 +165,17 @@ MF_INLINE mf_real mf_ltc_integrate_line(const mf_ltc *l, mf_vec3 p1, mf_vec3 p2,
 }
 
 /* A closed tube (cylinder with flat end caps, Heitz & Hill 2017): the line
- * plus the two caps as one-sided disks facing outwards (exact ellipses). */
+ * plus its ends. The silhouette of the closed cylinder, a convex body, is the
+ * line's strip plus, at each end, the outer half of the cap disk's outline,
+ * whether that cap faces the shading point or not; so each cap counts as half
+ * a two-sided disk (exact ellipses), which leaves an error of second order in
+ * radius / length (the line alone is of first order). */
 MF_INLINE mf_real mf_ltc_integrate_tube(const mf_ltc *l, mf_vec3 p1, mf_vec3 p2, mf_real radius)
 {
     mf_vec3 t = mf__vsub(p2, p1);
     mf_real line = mf_ltc_integrate_line(l, p1, p2, radius);
     if (!(line >= MF_R(0.0))) return MF_R(0.0);
-    return line + mf_ltc_integrate_disk(l, p1, mf_scale(t, MF_R(-1.0)), radius, 0) + mf_ltc_integrate_disk(l, p2, t, radius, 0);
+    return line + MF_R(0.5) * (mf_ltc_integrate_disk(l, p1, t, radius, 1) + mf_ltc_integrate_disk(l, p2, t, radius, 1));
 }
 
 /* Textured quad light (Heitz et al. 2016 Sec. 5.3): for the parallelogram
