@@ -3085,51 +3085,47 @@ MF_INLINE mf_real mf_ltc_integrate_disk(const mf_ltc *l, mf_vec3 center, mf_vec3
     return mf_ltc_integrate_ellipse(l, center, mf_scale(t, radius), mf_scale(b, radius), two_sided);
 }
 
-/* Cosine-lobe integral of a line segment p1 p2 per unit width (Heitz & Hill
+/* Cosine-lobe integral of a line segment a b per unit width (Heitz & Hill
  * 2017 Eq. 1.20): (1/pi) int max(0, w.z) |w x T| / |p|^2 dl, clipped at the
- * horizon. With T the unit tangent, l1, l2 = p.T at the ends, d the distance
- * of the line and p0 its nearest point, in closed form
- *   (1/2pi) [ (p0.z/d) (l2/|p2|^2 - l1/|p1|^2 + theta/d) + T.z d (1/|p1|^2 - 1/|p2|^2) ],
- * theta the angle p1 p2 subtend (one atan2). (The second term's antiderivative
- * -d/(d^2 + l^2) corrects the chapter's Eq. 1.23.) */
-MF_INLINE mf_real mf__line_cosine(mf_vec3 p1, mf_vec3 p2)
+ * horizon; d > 0 is the distance of the line from the origin. With T the
+ * unit tangent, l1, l2 = p.T at the ends and p0 the line's nearest point, in
+ * closed form
+ *   (1/2pi) [ (p0.z/d) (l2/|b|^2 - l1/|a|^2 + theta/d) + T.z d (1/|a|^2 - 1/|b|^2) ],
+ * theta = atan2(d (l2 - l1), a.b) the angle a and b subtend. (The second
+ * term's antiderivative is -d / (d^2 + l^2): the chapter's Eq. 1.23 is off.) */
+MF_INLINE mf_real mf__line_cosine(mf_vec3 a, mf_vec3 b, mf_real d, mf_real len)
 {
-    mf_vec3 t, p0;
-    mf_real len, l1, l2, d, r1, r2, th, res;
-    if (!(p1.z > MF_R(0.0)) && !(p2.z > MF_R(0.0))) return MF_R(0.0);
-    if (p1.z < MF_R(0.0)) p1 = mf_scale(mf__vsub(mf_scale(p1, p2.z), mf_scale(p2, p1.z)), MF_R(1.0) / (p2.z - p1.z));
-    else if (p2.z < MF_R(0.0)) p2 = mf_scale(mf__vsub(mf_scale(p2, p1.z), mf_scale(p1, p2.z)), MF_R(1.0) / (p1.z - p2.z));
-    t = mf__vsub(p2, p1);
-    len = MF_SQRT(mf_dot(t, t));
-    if (!(len > MF_R(0.0)) || !(len < MF_BIG)) return MF_R(0.0);
-    t = mf_scale(t, MF_R(1.0) / len);
-    l1 = mf_dot(p1, t); l2 = l1 + len;
-    p0 = mf__vsub(p1, mf_scale(t, l1));
-    d = MF_SQRT(mf_dot(mf_cross(p1, t), mf_cross(p1, t)));
-    r1 = mf_dot(p1, p1); r2 = mf_dot(p2, p2);
-    if (!(d > MF_R(0.0)) || !(r1 > MF_R(0.0)) || !(r2 > MF_R(0.0))) return MF_R(0.0);
-    th = MF_ATAN2(d * len, d * d + l1 * l2);
-    res = (p0.z / d) * (l2 / r2 - l1 / r1 + th / d) + t.z * d * (MF_R(1.0) / r1 - MF_R(1.0) / r2);
-    return mf__cap(mf_max(res * MF_R(0.15915494309189533577), MF_R(0.0)));
+    mf_vec3 e;
+    mf_real l1, l2, r1, r2, tz, p0z, res;
+    if (!(a.z > MF_R(0.0)) || !(b.z > MF_R(0.0))) {   /* clip (len: of the clipped segment) */
+        if (!(a.z > MF_R(0.0)) && !(b.z > MF_R(0.0))) return MF_R(0.0);
+        if (a.z < MF_R(0.0)) a = mf_scale(mf__vsub(mf_scale(a, b.z), mf_scale(b, a.z)), MF_R(1.0) / (b.z - a.z));
+        else if (b.z < MF_R(0.0)) b = mf_scale(mf__vsub(mf_scale(b, a.z), mf_scale(a, b.z)), MF_R(1.0) / (a.z - b.z));
+        e = mf__vsub(b, a);
+        len = MF_SQRT(mf_dot(e, e));
+    } else e = mf__vsub(b, a);
+    r1 = mf_dot(a, a); r2 = mf_dot(b, b);
+    if (!(len > MF_R(0.0)) || !(r1 > MF_R(0.0)) || !(r2 > MF_R(0.0))) return MF_R(0.0);
+    l1 = mf_dot(a, e) / len; l2 = l1 + len; tz = e.z / len;
+    p0z = a.z - l1 * tz;
+    res = (p0z / d) * (l2 / r2 - l1 / r1 + MF_ATAN2(d * len, mf_dot(a, b)) / d) + tz * d * (MF_R(1.0) / r1 - MF_R(1.0) / r2);
+    return mf_max(res * MF_R(0.15915494309189533577), MF_R(0.0));
 }
 
 /* Integral of D over a thin cylinder of the given radius along p1 p2 (Heitz &
  * Hill 2017): its silhouette, a strip of width 2 radius across the plane of
- * the line and the shading point (normal n), becomes in the cosine space a
- * strip of width 2 radius / |M^T n| (first order in the radius), integrated
- * by mf__line_cosine. Exact as the radius goes to 0, relative error of the
- * order of radius / distance. No end caps: mf_ltc_integrate_tube. */
+ * the line and the shading point (unit normal n), becomes in the cosine space
+ * a strip of width 2 radius / |M^T n| (first order in the radius),
+ * integrated by mf__line_cosine. With a = M^-1 p1, b = M^-1 p2,
+ * a x b = det(M^-1) M^T (p1 x p2), so 1 / |M^T n| = |det M^-1| |p1 x p2| / |a x b|.
+ * Exact as the radius goes to 0; the error is of first order in
+ * radius / length (the cylinder's rounded ends: mf_ltc_integrate_tube). */
 MF_INLINE mf_real mf_ltc_integrate_line(const mf_ltc *l, mf_vec3 p1, mf_vec3 p2, mf_real radius)
 {
-    mf_vec3 n = mf_cross(p1, p2), mt;
-    mf_real nl = MF_SQRT(mf_dot(n, n)), w;
-    if (!(nl > MF_R(0.0)) || !(nl < MF_BIG) || !(radius > MF_R(0.0)) || !(radius < MF_BIG)) return MF_R(0.0);
-    n = mf_scale(n, MF_R(1.0) / nl);
-    mt = mf_vec3_make(l->M[0] * n.x + l->M[3] * n.y + l->M[6] * n.z, l->M[1] * n.x + l->M[4] * n.y + l->M[7] * n.z,
-                      l->M[2] * n.x + l->M[5] * n.y + l->M[8] * n.z);
-    w = MF_SQRT(mf_dot(mt, mt));
-    if (!(w > MF_R(0.0))) return MF_R(0.0);
-    return mf__cap(MF_R(2.0) * radius / w * mf__line_cosine(mf__mat3_apply(l->Minv, p1), mf__mat3_apply(l->Minv, p2)));
+    mf_vec3 a = mf__mat3_apply(l->Minv, p1), b = mf__mat3_apply(l->Minv, p2), c = mf_cross(a, b), e = mf__vsub(b, a);
+    mf_real cl = MF_SQRT(mf_dot(c, c)), el = MF_SQRT(mf_dot(e, e)), n = MF_SQRT(mf_dot(mf_cross(p1, p2), mf_cross(p1, p2)));
+    if (!(cl > MF_R(0.0)) || !(el > MF_R(0.0)) || !(radius > MF_R(0.0)) || !(radius < MF_BIG) || !(n < MF_BIG)) return MF_R(0.0);
+    return mf__cap(MF_R(2.0) * radius * l->det_inv * n / cl * mf__line_cosine(a, b, cl / el, el));
 }
 
 /* A closed tube (cylinder with flat end caps, Heitz & Hill 2017): the line

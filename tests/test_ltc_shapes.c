@@ -177,8 +177,9 @@ static void test_ellipses(mft_rng *r)
             ++n_clip;
         }
     }
+    printf("    ellipses above the horizon: LTC integral vs quadrature worst rel %.2g over %d\n", worst, n_above);
     snprintf(msg, sizeof msg, "ellipses above the horizon: LTC integral vs quadrature, %d cases (worst rel %.2g)", n_above, worst);
-    MFT_CHECK(n_above == 24 && worst < MFT_TOL(1e-9, 2e-4), msg);
+    MFT_CHECK(n_above == 24 && worst < MFT_TOL(1e-9, 5e-6), msg);
     cm /= n_clip > 0 ? n_clip : 1;
     printf("    ellipses across the horizon (sphere approximation): |LTC - quadrature| / |F| mean %.4f, max %.4f over %d\n", cm, cw, n_clip);
     snprintf(msg, sizeof msg, "ellipses across the horizon: sphere approximation error / |F| mean %.4f < %.2f, max %.4f < %.2f", cm, MFT_ELL_CLIP_MEAN, cw, MFT_ELL_CLIP_MAX);
@@ -198,8 +199,9 @@ static void test_ellipses(mft_rng *r)
                 double e = fabs(got - want) / want;
                 if (e > w2) w2 = e;
             }
+        printf("    disks parallel to the surface, radius 1e-3..1e3, off-axis 0..0.6 h: analytic form factor worst rel %.2g\n", w2);
         snprintf(msg, sizeof msg, "disks parallel to the surface, radius 1e-3..1e3: analytic form factor (worst rel %.2g)", w2);
-        MFT_CHECK(w2 < MFT_TOL(1e-12, 1e-5), msg);
+        MFT_CHECK(w2 < MFT_TOL(1e-12, 2e-6), msg);
         MFT_CHECK(mf_ltc_integrate_disk(&l, v3(0.3, 0, 1), v3(0, 0, 1), MF_R(0.5), 0) == MF_R(0.0) &&
                   mf_ltc_integrate_disk(&l, v3(0.3, 0, 1), v3(0, 0, 1), MF_R(0.5), 1) == mf_ltc_integrate_disk(&l, v3(0.3, 0, 1), v3(0, 0, -1), MF_R(0.5), 0),
                   "disk: the back face is 0 one-sided, the front's value two-sided");
