@@ -733,12 +733,13 @@ static void bench_ltc_shapes(void)
     mf_vec3 c = mf_vec3_make(MF_R(0.2), MF_R(0.1), MF_R(2.0)), n = mf_vec3_make(MF_R(0.1), MF_R(0.0), MF_R(-1.0));
     mf_vec3 p1 = mf_vec3_make(MF_R(-1.0), MF_R(0.3), MF_R(1.5)), p2 = mf_vec3_make(MF_R(1.0), MF_R(0.5), MF_R(2.0));
     mf_real cs[32], sn[32], rad = MF_R(0.5), lr = MF_R(0.02);
-    double best[5], s = 0.0;
+    mf_vec3 hc = mf_vec3_make(MF_R(0.0), MF_R(1.5), MF_R(0.1)), hu = mf_vec3_make(MF_R(0.8), MF_R(0.0), MF_R(0.0)), hv = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.5));
+    double best[7], s = 0.0;
     int i, k, it, reps = 20000;
     for (k = 0; k < 32; ++k) { cs[k] = (mf_real)cos(-6.283185307179586 * k / 32); sn[k] = (mf_real)sin(-6.283185307179586 * k / 32); }
-    for (k = 0; k < 5; ++k) best[k] = 1e30;
+    for (k = 0; k < 7; ++k) best[k] = 1e30;
     for (it = 0; it < 100; ++it) {
-        double t[6];
+        double t[8];
         t[0] = now_ns();
         for (i = 0; i < reps; ++i) { c.x = (mf_real)(0.2 + 1e-7 * (i & 7)); s += (double)mf_ltc_integrate_disk(&l, c, n, rad, 0); }
         t[1] = now_ns();
@@ -762,12 +763,18 @@ static void bench_ltc_shapes(void)
         t[4] = now_ns();
         for (i = 0; i < reps; ++i) { p1.x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_ltc_integrate_tube(&l, p1, p2, lr); }
         t[5] = now_ns();
-        for (k = 0; k < 5; ++k)
+        /* an ellipse crossing the horizon: sphere approximation, exact clipping */
+        for (i = 0; i < reps; ++i) { hc.x = (mf_real)(1e-7 * (i & 7)); s += (double)mf_ltc_integrate_ellipse(&l, hc, hu, hv, 1); }
+        t[6] = now_ns();
+        for (i = 0; i < reps; ++i) { hc.x = (mf_real)(1e-7 * (i & 7)); s += (double)mf_ltc_integrate_ellipse_clipped(&l, hc, hu, hv, 1); }
+        t[7] = now_ns();
+        for (k = 0; k < 7; ++k)
             if ((t[k + 1] - t[k]) / reps < best[k]) best[k] = (t[k + 1] - t[k]) / reps;
     }
     printf("bench ltc_disk %.2f ratio=%.3f plain_32gon=%.2f\n", best[0], best[0] / best[1], best[1]);
     printf("bench ltc_line %.2f ratio=%.3f plain_ribbon_quad=%.2f\n", best[2], best[2] / best[3], best[3]);
     printf("bench ltc_tube %.2f\n", best[4]);
+    printf("bench ltc_ellipse_crossing_horizon %.2f exact_clipping=%.2f\n", best[5], best[6]);
     g_sink += s;
 }
 

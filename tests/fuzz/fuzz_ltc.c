@@ -32,6 +32,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (n >= 4) {   /* light shapes from the first vertices */
         mf_real uv[2], lod, r = fz_real(&in);
         FZ_NONNEG(mf_ltc_integrate_ellipse(&l, verts[0], verts[1], verts[2], two), "ltc_integrate_ellipse");
+        FZ_NONNEG(mf_ltc_integrate_ellipse_clipped(&l, verts[0], verts[1], verts[2], two), "ltc_integrate_ellipse_clipped");
         FZ_NONNEG(mf_ltc_integrate_disk(&l, verts[0], verts[1], r, two), "ltc_integrate_disk");
         FZ_VEC(mf_ellipse_vector_form_factor(verts[0], verts[1], verts[2]), "ellipse_vector_form_factor");
         FZ_NONNEG(mf_ltc_integrate_line(&l, verts[0], verts[3], r), "ltc_integrate_line");
