@@ -16,6 +16,7 @@
  *     the distance;
  *   bad input: 0, never NaN. */
 #include "mf_test.h"
+#include "ref_other.h"
 #include <stdlib.h>
 
 static const double PI_S = 3.14159265358979323846;
@@ -486,6 +487,40 @@ static void test_bad_input(void)
     MFT_CHECK(ok, "textured quad: degenerate, NaN, NULL give 0 and a finite uv and LOD");
 }
 
+/* float and double agree: the same shapes through ref_other.c (the other
+ * precision), relative to the value (the line and tube: their size) */
+static void test_precisions(mft_rng *r)
+{
+    double worst[4] = { 0, 0, 0, 0 };
+    int k, sh;
+    char msg[200];
+    for (k = 0; k < 200; ++k) {
+        double m9[9], p[9], rad = 0.01;
+        mf_real m[9];
+        mf_ltc l;
+        int i;
+        for (i = 0; i < 9; ++i) m9[i] = (i % 4 == 0 ? 1.0 : 0.0) + 0.6 * (2 * u01(r) - 1);
+        for (i = 0; i < 9; ++i) m[i] = (mf_real)m9[i];
+        for (i = 0; i < 9; ++i) p[i] = (i == 2 ? 0.3 + u01(r) : 0.0) + (i < 3 ? 2 * u01(r) - 1 : 0.8 * (u01(r) - 0.5));
+        for (i = 0; i < 9; ++i) { m9[i] = (double)m[i]; p[i] = (double)(mf_real)p[i]; }   /* both see the same inputs */
+        l = mf_ltc_from_matrix9(m);
+        for (sh = 0; sh < 4; ++sh) {
+            mf_vec3 c = v3(p[0], p[1], p[2]), u = v3(p[3], p[4], p[5]), v = v3(p[6], p[7], p[8]);
+            double mine = sh == 0 ? (double)mf_ltc_integrate_ellipse(&l, c, u, v, 1)
+                        : sh == 1 ? (double)mf_ltc_integrate_ellipse_clipped(&l, c, u, v, 1)
+                        : sh == 2 ? (double)mf_ltc_integrate_line(&l, c, u, (mf_real)rad)
+                                  : (double)mf_ltc_integrate_tube(&l, c, u, (mf_real)rad);
+            double other = ref_ltc_shape(sh, m9, p, rad), e = fabs(mine - other) / fmax(fabs(other), 1e-3);
+            if (sh >= 2) e = fabs(mine - other) / fmax(fabs(other), 1e-5);
+            if (e > worst[sh]) worst[sh] = e;
+        }
+    }
+    printf("    float vs double, 200 random shapes and matrices: ellipse %.2g, clipped ellipse %.2g, line %.2g, tube %.2g\n",
+           worst[0], worst[1], worst[2], worst[3]);
+    snprintf(msg, sizeof msg, "LTC shapes: float and double agree (worst rel %.2g %.2g %.2g %.2g)", worst[0], worst[1], worst[2], worst[3]);
+    MFT_CHECK(worst[0] < 1e-4 && worst[1] < 1e-4 && worst[2] < 5e-4 && worst[3] < 5e-4, msg);
+}
+
 void test_ltc_shapes(void)
 {
     mft_rng r;
@@ -496,4 +531,5 @@ void test_ltc_shapes(void)
     test_textured(&r);
     test_true_brdf();
     test_bad_input();
+    test_precisions(&r);
 }
