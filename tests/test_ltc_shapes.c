@@ -7,14 +7,14 @@
  *     1e-9 (double, measured 1.4e-12) / 5e-6 (float, measured 5.1e-7); disks
  *     parallel to the surface against their closed form; the 256-gon;
  *   ellipses crossing the horizon: the sphere approximation's error, stated
- *     and bounded (see MFT_ELL_CLIP_*);
+ *     and bounded (see MFT_ELL_CLIP_*), and the exact clipping (2e-4 of |F|);
  *   lines: first order in radius / length against the lateral surface of the
  *     cylinder; tubes (line + half caps): second order against the closed
  *     cylinder;
  *   textured quads: the lookup point against the D-weighted centroid of the
  *     texture coordinates (what a linear texture needs), its LOD monotone in
  *     the distance;
- *   bad input: 0, never NaN. */
+ *   bad input: 0, never NaN; float and double agree (ref_other.c). */
 #include "mf_test.h"
 #include "ref_other.h"
 #include <stdlib.h>
