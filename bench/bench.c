@@ -652,6 +652,7 @@ struct bench_kind { const char *name; mf_ndf d; };
 static void bench_core(const struct bench_kind *ks, int ggx_only);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
+static void bench_ltc_shapes(void);
 static void bench_ltc(void)
 {
     int i, k;
@@ -719,6 +720,62 @@ static void bench_ltc(void)
         printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
         g_sink += s + (double)fr.albedo;
     }
+    bench_ltc_shapes();
+}
+
+/* LTC light shapes: a disk (exact cone form factor) against the plain way,
+ * its inscribed 32-gon through mf_ltc_integrate (0.64% low); a line light
+ * (closed form) against a camera-facing quad ribbon of the same width
+ * through mf_ltc_integrate; a tube (line + half caps) */
+static void bench_ltc_shapes(void)
+{
+    mf_ltc l = mf_ltc_ggx(MF_R(0.7), MF_R(0.3));
+    mf_vec3 c = mf_vec3_make(MF_R(0.2), MF_R(0.1), MF_R(2.0)), n = mf_vec3_make(MF_R(0.1), MF_R(0.0), MF_R(-1.0));
+    mf_vec3 p1 = mf_vec3_make(MF_R(-1.0), MF_R(0.3), MF_R(1.5)), p2 = mf_vec3_make(MF_R(1.0), MF_R(0.5), MF_R(2.0));
+    mf_real cs[32], sn[32], rad = MF_R(0.5), lr = MF_R(0.02);
+    mf_vec3 hc = mf_vec3_make(MF_R(0.0), MF_R(1.5), MF_R(0.1)), hu = mf_vec3_make(MF_R(0.8), MF_R(0.0), MF_R(0.0)), hv = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.5));
+    double best[7], s = 0.0;
+    int i, k, it, reps = 20000;
+    for (k = 0; k < 32; ++k) { cs[k] = (mf_real)cos(-6.283185307179586 * k / 32); sn[k] = (mf_real)sin(-6.283185307179586 * k / 32); }
+    for (k = 0; k < 7; ++k) best[k] = 1e30;
+    for (it = 0; it < 100; ++it) {
+        double t[8];
+        t[0] = now_ns();
+        for (i = 0; i < reps; ++i) { c.x = (mf_real)(0.2 + 1e-7 * (i & 7)); s += (double)mf_ltc_integrate_disk(&l, c, n, rad, 0); }
+        t[1] = now_ns();
+        for (i = 0; i < reps; ++i) {   /* plain: the disk's frame, 32 vertices, the polygon integral */
+            mf_vec3 tt, bb, nn = mf_normalize(n), q[32];
+            c.x = (mf_real)(0.2 + 1e-7 * (i & 7));
+            mf_frame(nn, &tt, &bb);
+            for (k = 0; k < 32; ++k) q[k] = mf_add(c, mf_add(mf_scale(tt, rad * cs[k]), mf_scale(bb, rad * sn[k])));
+            s += (double)mf_ltc_integrate(&l, q, 32, 0);
+        }
+        t[2] = now_ns();
+        for (i = 0; i < reps; ++i) { p1.x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_ltc_integrate_line(&l, p1, p2, lr); }
+        t[3] = now_ns();
+        for (i = 0; i < reps; ++i) {   /* plain: a ribbon of width 2 lr across the plane of the line and the point */
+            mf_vec3 w, q[4];
+            p1.x = (mf_real)(-1.0 - 1e-7 * (i & 7));
+            w = mf_scale(mf_normalize(mf_cross(p1, p2)), lr);
+            q[0] = mf_add(p1, w); q[1] = mf_add(p2, w); q[2] = mf_add(p2, mf_scale(w, MF_R(-1.0))); q[3] = mf_add(p1, mf_scale(w, MF_R(-1.0)));
+            s += (double)mf_ltc_integrate(&l, q, 4, 1);
+        }
+        t[4] = now_ns();
+        for (i = 0; i < reps; ++i) { p1.x = (mf_real)(-1.0 - 1e-7 * (i & 7)); s += (double)mf_ltc_integrate_tube(&l, p1, p2, lr); }
+        t[5] = now_ns();
+        /* an ellipse crossing the horizon: sphere approximation, exact clipping */
+        for (i = 0; i < reps; ++i) { hc.x = (mf_real)(1e-7 * (i & 7)); s += (double)mf_ltc_integrate_ellipse(&l, hc, hu, hv, 1); }
+        t[6] = now_ns();
+        for (i = 0; i < reps; ++i) { hc.x = (mf_real)(1e-7 * (i & 7)); s += (double)mf_ltc_integrate_ellipse_clipped(&l, hc, hu, hv, 1); }
+        t[7] = now_ns();
+        for (k = 0; k < 7; ++k)
+            if ((t[k + 1] - t[k]) / reps < best[k]) best[k] = (t[k + 1] - t[k]) / reps;
+    }
+    printf("bench ltc_disk %.2f ratio=%.3f plain_32gon=%.2f\n", best[0], best[0] / best[1], best[1]);
+    printf("bench ltc_line %.2f ratio=%.3f plain_ribbon_quad=%.2f\n", best[2], best[2] / best[3], best[3]);
+    printf("bench ltc_tube %.2f\n", best[4]);
+    printf("bench ltc_ellipse_crossing_horizon %.2f exact_clipping=%.2f\n", best[5], best[6]);
+    g_sink += s;
 }
 
 int main(int argc, char **argv)

@@ -181,6 +181,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_brdf);
     MFT_RUN(test_ltmd);
     MFT_RUN(test_ltc);
+    MFT_RUN(test_ltc_shapes);
     MFT_RUN(test_leadr);
     MFT_RUN(test_tabulated);
     MFT_RUN(test_ibm);

@@ -87,6 +87,7 @@ void test_float(void);
 void test_tu2(void);
 void test_ltmd(void);
 void test_ltc(void);
+void test_ltc_shapes(void);
 void test_leadr(void);
 void test_tabulated(void);
 void test_ibm(void);

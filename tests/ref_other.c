@@ -57,3 +57,21 @@ void ref_ltc_edge_fast(const double *a, const double *b, double *out)
     mf_vec3 e = mf__edge_vector_fast(v3(a), v3(b));
     out[0] = (double)e.x; out[1] = (double)e.y; out[2] = (double)e.z;
 }
+
+/* an LTC light shape in this precision: shape 0 ellipse (p0 center, p1 p2
+ * axes), 1 exactly clipped ellipse, 2 line (p0 p1, radius r), 3 tube;
+ * m9: the row-major matrix M */
+double ref_ltc_shape(int shape, const double *m9, const double *p, double r)
+{
+    mf_real m[9];
+    mf_ltc l;
+    int i;
+    for (i = 0; i < 9; ++i) m[i] = (mf_real)m9[i];
+    l = mf_ltc_from_matrix9(m);
+    switch (shape) {
+    case 0: return (double)mf_ltc_integrate_ellipse(&l, v3(p), v3(p + 3), v3(p + 6), 1);
+    case 1: return (double)mf_ltc_integrate_ellipse_clipped(&l, v3(p), v3(p + 3), v3(p + 6), 1);
+    case 2: return (double)mf_ltc_integrate_line(&l, v3(p), v3(p + 3), (mf_real)r);
+    default: return (double)mf_ltc_integrate_tube(&l, v3(p), v3(p + 3), (mf_real)r);
+    }
+}

@@ -104,6 +104,19 @@ int main(void)
         s += mf_polygon_irradiance(quad, 4, 0) + mf_sphere_form_factor(mf_polygon_vector_form_factor(quad, 4));
         s += mf_ltc_meso_alpha(MF_R(0.9)) + mf_ltc_combined_alpha(MF_R(0.2), MF_R(0.3));
     }
+    {   /* LTC light shapes */
+        const mf_real m9[9] = { MF_R(1.0), MF_R(0.0), MF_R(0.2), MF_R(0.0), MF_R(1.0), MF_R(0.0), MF_R(0.1), MF_R(0.0), MF_R(1.0) };
+        mf_ltc l = mf_ltc_from_matrix9(m9);
+        mf_vec3 c = mf_vec3_make(MF_R(0.1), MF_R(0.2), MF_R(1.0)), u = mf_vec3_make(MF_R(0.3), MF_R(0.0), MF_R(0.0));
+        mf_vec3 v = mf_vec3_make(MF_R(0.0), MF_R(-0.3), MF_R(0.0)), quad[4];
+        mf_real uv[2], lod;
+        quad[0] = mf_vec3_make(-1, -1, 1); quad[1] = mf_vec3_make(-1, 1, 1); quad[2] = mf_vec3_make(1, 1, 1); quad[3] = mf_vec3_make(1, -1, 1);
+        s += mf_ltc_integrate_ellipse_clipped(&l, c, u, v, 1);
+        s += mf_ltc_integrate_ellipse(&l, c, u, v, 0) + mf_ltc_integrate_disk(&l, c, mf_vec3_make(0, 0, -1), MF_R(0.3), 1);
+        s += mf_ellipse_vector_form_factor(c, u, v).z + mf_ltc_integrate_line(&l, c, mf_add(c, u), MF_R(0.01));
+        s += mf_ltc_integrate_tube(&l, c, mf_add(c, u), MF_R(0.01)) + mf_ltc_integrate_textured(&l, quad, 0, MF_R(256.0), uv, &lod);
+        s += uv[0] + lod;
+    }
     {
         mf_leadr la = mf_leadr_with_roughness(mf_leadr_add(mf_leadr_from_slope(MF_R(0.1), MF_R(0.2)), mf_leadr_from_normal(wo)), MF_R(0.2), MF_R(0.3));
         mf_ndf ld;

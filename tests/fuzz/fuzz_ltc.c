@@ -1,7 +1,8 @@
 /* Fuzz target: LTC with arbitrary matrices and polygons (NaN, Inf, huge,
  * repeated and self-intersecting vertices): mf_ltc_from_matrix,
  * mf_ltc_from_inverse, eval, sample, mf_ltc_integrate, the polygon form
- * factors and the table lookups. */
+ * factors, the table lookups and the light shapes (ellipses, disks, lines,
+ * tubes, textured quads). */
 #include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -28,6 +29,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     F = mf_polygon_vector_form_factor(verts, n);
     FZ_VEC(F, "vector_form_factor");
     FZ_NONNEG(mf_sphere_form_factor(F), "sphere_form_factor");
+    if (n >= 4) {   /* light shapes from the first vertices */
+        mf_real uv[2], lod, r = fz_real(&in);
+        FZ_NONNEG(mf_ltc_integrate_ellipse(&l, verts[0], verts[1], verts[2], two), "ltc_integrate_ellipse");
+        FZ_NONNEG(mf_ltc_integrate_ellipse_clipped(&l, verts[0], verts[1], verts[2], two), "ltc_integrate_ellipse_clipped");
+        FZ_NONNEG(mf_ltc_integrate_disk(&l, verts[0], verts[1], r, two), "ltc_integrate_disk");
+        FZ_VEC(mf_ellipse_vector_form_factor(verts[0], verts[1], verts[2]), "ellipse_vector_form_factor");
+        FZ_NONNEG(mf_ltc_integrate_line(&l, verts[0], verts[3], r), "ltc_integrate_line");
+        FZ_NONNEG(mf_ltc_integrate_tube(&l, verts[0], verts[3], r), "ltc_integrate_tube");
+        FZ_NONNEG(mf_ltc_integrate_textured(&l, verts, two, r, uv, &lod), "ltc_integrate_textured");
+        FZ_FIN(uv[0], "textured u"); FZ_FIN(uv[1], "textured v"); FZ_NONNEG(lod, "textured lod");
+    }
     a = fz_real(&in); b = fz_real(&in);
     FZ_NONNEG(mf_ltc_ggx_albedo(a, b), "ggx_albedo");
     FZ_NONNEG(mf_ltc_ggx_fresnel(a, b), "ggx_fresnel");
