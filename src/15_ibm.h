@@ -59,7 +59,9 @@
  * bit, so no pointers are stored at all. */
 #define MF_IBM_MAGIC 0x4d464942u          /* "BIFM" in little-endian bytes */
 #define MF_IBM_VERSION 1u
+#ifndef MF_IBM_LEAF
 #define MF_IBM_LEAF 10                    /* leaf size L of Sec. 5.4.4 */
+#endif
 #define MF_IBM_TREE_MIN 32                /* bins this large store the top of their kd-tree */
 #define MF_IBM_MAX_RES 1024               /* bins per axis at most (index memory b^2) */
 #define MF_IBM_MAX_RADIUS 8               /* neighbourhood radius in bins at most */
@@ -340,9 +342,22 @@ MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
 /* stored kd-tree levels of a bin of n texels: floor(log2(n / 16)), within the tree's depth */
 MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
 {
-    int k = 0;
-    while (k < 24 && (n >> (k + 5)) != 0u) ++k;
+    int k = 0;   /* bit length of n >> 5, by halving (no loop over the bits) */
+    n >>= 5;
+    if (n >> 16) { k += 16; n >>= 16; }
+    if (n >> 8) { k += 8; n >>= 8; }
+    if (n >> 4) { k += 4; n >>= 4; }
+    if (n >> 2) { k += 2; n >>= 2; }
+    if (n >> 1) { k += 1; n >>= 1; }
+    k += (int)n;
+    k = k < 24 ? k : 24;
     return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
+}
+
+/* 1 if bin j holds no texel (its block is empty) */
+MF_INLINE int mf__ibm_bin_empty(const mf_ibm *ibm, int j)
+{
+    return mf__ibm_off(ibm, j) == mf__ibm_off(ibm, j + 1);
 }
 
 /* Bin j's texel count; *base: the first of its positions, *tab: its level-k
@@ -351,8 +366,12 @@ MF_INLINE unsigned int mf__ibm_bin_info(const mf_ibm *ibm, int j, unsigned int *
 {
     unsigned int s = mf__ibm_off(ibm, j), len = mf__ibm_off(ibm, j + 1) - s, n;
     if (len < (unsigned int)MF_IBM_TREE_MIN) { *base = s; *tab = s; *k = 0; return len; }
-    n = mf__ibm_get(ibm->data + ibm->pos_at, s, ibm->list_bits);
-    *k = mf__ibm_tree_levels(ibm, n);
+    /* n from the block length len = n + 2 + 2^k(n), strictly increasing in
+     * n (the stored count is not read: one memory access less per bin) */
+    for (*k = mf__ibm_tree_levels(ibm, len);; --*k) {
+        n = len - 2u - (1u << *k);
+        if (*k == 0 || mf__ibm_tree_levels(ibm, n) == *k) break;
+    }
     *tab = s + 1u;
     *base = s + 2u + (1u << *k);
     return n;
@@ -760,10 +779,10 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const m
     int x, y, W = ibm->width, H = ibm->height;
     unsigned int m = (1u << ibm->axis_bits) - 1u;
     for (y = p->by0; y < p->by1; ++y) {
-        int ty = y % H;
+        int ty = y >= 0 && y < H ? y : y % H;   /* no division inside the period */
         if (ty < 0) ty += H;
         for (x = p->bx0; x < p->bx1; ++x) {
-            int tx = x % W, dx, dy;
+            int tx = x >= 0 && x < W ? x : x % W, dx, dy;
             unsigned int v;
             if (tx < 0) tx += W;
             v = mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits);
@@ -844,6 +863,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                         int x, y;
                         mf_real a;
                         mf__ibm_unmorton(ibm->kx, ibm->ky, mf__ibm_get(pos, s, ibm->list_bits), &x, &y);
+                        if (x < pc->bx0 || x >= pc->bx1 || y < pc->by0 || y >= pc->by1) continue;
                         a = mf__ibm_texel_area(pc, x, y);
                         if (a >= MF_R(1.0)) ++cnt[i];
                         else frac[i] += a;
@@ -896,7 +916,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         for (i = 0; i < s->n; ++i) s->w[i] = (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]) * inv;
         return;
     }
-    for (i = 0; i < s->n; ++i) s->w[i] = p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]);
+    for (i = 0; i < s->n; ++i) s->w[i] = p->full > MF_R(0.0) ? p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]) : MF_R(0.0);
     if (direct && !p->few) {
         /* wanted bins with fewer texels than half the bounding box: their
          * lists (kd traversal) cost less than visiting the box */
@@ -941,7 +961,7 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     mf__ibm_fp p;
     mf__ibm_set s;
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
-    if (mf_ibm_bin_texels(ibm, bin) == 0) return MF_R(0.0);   /* empty bin: no footprint work */
+    if (mf__ibm_bin_empty(ibm, bin)) return MF_R(0.0);   /* empty bin: no footprint work */
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
@@ -962,7 +982,7 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
         for (dx = -r; dx <= r; ++dx) {
             int j = (cx + dx) + b * (cy + dy);
             if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-            if (mf_ibm_bin_texels(ibm, j) > 0) mf__ibm_set_add(&s, dx, dy, j);
+            if (!mf__ibm_bin_empty(ibm, j)) mf__ibm_set_add(&s, dx, dy, j);
         }
     if (s.n == 0) return 0;   /* an empty neighbourhood: no footprint work */
     mf__ibm_footprint(ibm, f, &p);
@@ -1002,7 +1022,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
             int j = (cx + dx) + b * (cy + dy);
             mf_vec3 t;
             if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-            if (mf_ibm_bin_texels(ibm, j) == 0) continue;
+            if (mf__ibm_bin_empty(ibm, j)) continue;
             if (p.mode == MF__IBM_EXACT && !p.direct) {
                 t = mf_ibm_bin_normal(ibm, j);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
