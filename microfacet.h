@@ -5192,6 +5192,11 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     mf_real frac[MF_IBM_BATCH];
     const unsigned int *pos = ibm->data + ibm->pos_at;
     int sp = 0, i, depth = ibm->kx + ibm->ky;
+    /* the piece's texel box in Morton code: the x and y bits of a code,
+     * masked, compare like x and y themselves */
+    unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
+    unsigned int bx0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->bx0, 0u), bx1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->bx1 - 1u, 0u);
+    unsigned int by0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->by0), by1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->by1 - 1u);
     cur.x0 = 0; cur.y0 = 0; cur.lx = ibm->kx; cur.ly = ibm->ky; cur.pre = 0u;
     for (i = 0; i < nb; ++i) {
         unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]);
@@ -5218,8 +5223,9 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                     for (; s < e; ++s) {
                         int x, y;
                         mf_real a;
-                        mf__ibm_unmorton(ibm->kx, ibm->ky, mf__ibm_get(pos, s, ibm->list_bits), &x, &y);
-                        if (x < pc->bx0 || x >= pc->bx1 || y < pc->by0 || y >= pc->by1) continue;
+                        unsigned int code = mf__ibm_get(pos, s, ibm->list_bits), cx = code & xm, cy = code & ym;
+                        if (cx < bx0 || cx > bx1 || cy < by0 || cy > by1) continue;   /* outside the piece's box */
+                        mf__ibm_unmorton(ibm->kx, ibm->ky, code, &x, &y);
                         a = mf__ibm_texel_area(pc, x, y);
                         if (a >= MF_R(1.0)) ++cnt[i];
                         else frac[i] += a;
@@ -5312,12 +5318,46 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
 
+/* 1 if no texel of the bins can meet the footprint, decided before any
+ * footprint work for bins of few texels in all (at most 48): each texel
+ * against the footprint's bounding box widened by a texel, across the
+ * period. 0 when it may (or the footprint is large, wide or not finite). */
+MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *bins, int nb)
+{
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cx, cy, ex, ey;
+    unsigned int tot = 0u, n, base, tab, q;
+    int i, k, x, y;
+    if (!f || !mf__finite_bits(f->u) || !mf__finite_bits(f->v) || !mf__finite_bits(f->ax) || !mf__finite_bits(f->ay) ||
+        !mf__finite_bits(f->bx) || !mf__finite_bits(f->by) || !(MF_FABS(f->u) < MF_R(4.0)) || !(MF_FABS(f->v) < MF_R(4.0)))
+        return 0;
+    ex = MF_R(0.5) * (MF_FABS(f->ax) + MF_FABS(f->bx)) * W + MF_R(1.5);
+    ey = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * H + MF_R(1.5);
+    if (!(ex < MF_R(0.25) * W) || !(ey < MF_R(0.25) * H)) return 0;
+    for (i = 0; i < nb; ++i) {
+        tot += mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
+        if (tot > 48u) return 0;
+    }
+    cx = f->u * W - MF_R(0.5); cy = f->v * H - MF_R(0.5);
+    for (i = 0; i < nb; ++i) {
+        n = mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
+        for (q = 0u; q < n; ++q) {
+            mf_real dx, dy;
+            mf__ibm_unmorton(ibm->kx, ibm->ky, mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), &x, &y);
+            dx = (mf_real)x - cx; dy = (mf_real)y - cy;   /* texel center minus footprint center */
+            dx -= W * MF_FLOOR(dx / W + MF_R(0.5));
+            dy -= H * MF_FLOOR(dy / H + MF_R(0.5));
+            if (MF_FABS(dx) < ex && MF_FABS(dy) < ey) return 0;
+        }
+    }
+    return 1;
+}
+
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f)
 {
     mf__ibm_fp p;
     mf__ibm_set s;
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
-    if (mf__ibm_bin_empty(ibm, bin)) return MF_R(0.0);   /* empty bin: no footprint work */
+    if (mf__ibm_bin_empty(ibm, bin) || mf__ibm_far(ibm, f, &bin, 1)) return MF_R(0.0);   /* no footprint work */
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
@@ -5341,8 +5381,11 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
             if (!mf__ibm_bin_empty(ibm, j)) mf__ibm_set_add(&s, dx, dy, j);
         }
     if (s.n == 0) return 0;   /* an empty neighbourhood: no footprint work */
-    mf__ibm_footprint(ibm, f, &p);
-    mf__ibm_weights(ibm, &p, &s);
+    if (mf__ibm_far(ibm, f, s.bin, s.n)) { for (i = 0; i < s.n; ++i) s.w[i] = MF_R(0.0); }
+    else {
+        mf__ibm_footprint(ibm, f, &p);
+        mf__ibm_weights(ibm, &p, &s);
+    }
     for (i = 0; i < s.n; ++i) { bins[i] = s.bin[i]; weights[i] = s.w[i]; }
     return s.n;
 }
@@ -5365,9 +5408,20 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     int dx, dy, r = ibm->radius, b = ibm->res, cx, cy, i;
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
+    cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
+    {   /* the non-empty bins of the neighbourhood: none, or none of their
+         * texels near the footprint, returns before any footprint work */
+        int nb = 0, near[MF_IBM_MAX_WINDOW];
+        for (dy = -r; dy <= r; ++dy)
+            for (dx = -r; dx <= r; ++dx) {
+                int j = (cx + dx) + b * (cy + dy);
+                if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
+                if (!mf__ibm_bin_empty(ibm, j)) near[nb++] = j;
+            }
+        if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
+    }
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
-    cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
     if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_any(ibm, &p, (const mf__ibm_set *)0, cx, cy, r)) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
     /* the non-empty bins of the neighbourhood; for a footprint of many
