@@ -3165,9 +3165,11 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * Cost: an empty bin (or, for the queries below, an empty neighbourhood)
  * returns before any footprint work; footprints of up to
  * MF_IBM_DIRECT_TEXELS bounding-box texels visit the box, reading each
- * texel's bin before clipping it, unless the wanted bins hold fewer texels
- * than half the box (then their lists are walked); larger ones traverse the
- * kd-trees. A texel cut by one footprint edge gets its area in closed form. */
+ * texel's bin before clipping it, unless the wanted bins hold fewer than 8
+ * times the box's texels (then their kd-trees are traversed); larger ones
+ * traverse the kd-trees. Bins of a few texels far from the footprint return
+ * before any footprint work. A texel cut by one footprint edge gets its area
+ * in closed form. */
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
 /* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
@@ -4898,8 +4900,8 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     edges_ok = mf__finite_bits(f->ax) && mf__finite_bits(f->ay) && mf__finite_bits(f->bx) && mf__finite_bits(f->by);
     p->cx = f->u * W; p->cy = f->v * H;
     if (!(MF_FABS(p->cx) < MF_BIG) || !(MF_FABS(p->cy) < MF_BIG)) return;
-    p->cx -= W * MF_FLOOR(p->cx / W);
-    p->cy -= H * MF_FLOOR(p->cy / H);
+    if (!(p->cx >= MF_R(0.0) && p->cx < W)) p->cx -= W * MF_FLOOR(p->cx / W);   /* into the first period */
+    if (!(p->cy >= MF_R(0.0) && p->cy < H)) p->cy -= H * MF_FLOOR(p->cy / H);
     if (!(p->cx >= MF_R(0.0)) || !(p->cx < W)) p->cx = MF_R(0.0);   /* rounding at the period edge */
     if (!(p->cy >= MF_R(0.0)) || !(p->cy < H)) p->cy = MF_R(0.0);
     p->tx = (int)p->cx; if (p->tx >= ibm->width || p->tx < 0) p->tx = p->tx < 0 ? 0 : ibm->width - 1;
@@ -4914,9 +4916,12 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
          * edge to that thickness (the sampler uses these same edges). 64
          * measured best against double: L1 of the weights <= 4e-3 for any
          * thickness (none: up to 1, as round-off; 1024: 0.65, as widening) */
-        mf_real la2 = p->ax * p->ax + p->ay * p->ay, lb2 = p->bx * p->bx + p->by * p->by;
-        mf_real lm = MF_SQRT(mf_max(la2, lb2)), tmin = MF_R(64.0) * MF_EPS * (mf_max(W, H) + lm), grow;
-        if (lm < MF_BIG && p->area < tmin * lm) {
+        mf_real la2 = p->ax * p->ax + p->ay * p->ay, lb2 = p->bx * p->bx + p->by * p->by, lm, tmin, grow;
+        /* lm <= l1, the larger L1 length: no sliver when the area passes with l1 */
+        mf_real l1 = mf_max(MF_FABS(p->ax) + MF_FABS(p->ay), MF_FABS(p->bx) + MF_FABS(p->by));
+        lm = l1 < MF_BIG && p->area >= MF_R(64.0) * MF_EPS * (mf_max(W, H) + l1) * l1 ? MF_R(0.0) : MF_SQRT(mf_max(la2, lb2));
+        tmin = MF_R(64.0) * MF_EPS * (mf_max(W, H) + lm);
+        if (lm > MF_R(0.0) && lm < MF_BIG && p->area < tmin * lm) {
             grow = (tmin * lm - p->area) / lm * (cross > MF_R(0.0) ? MF_R(1.0) : MF_R(-1.0));
             if (la2 >= lb2) { p->bx -= grow * p->ay / lm; p->by += grow * p->ax / lm; }   /* b moves along a's normal */
             else { p->ax += grow * p->by / lm; p->ay -= grow * p->bx / lm; }              /* a along b's */
@@ -4936,8 +4941,8 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         p->x[3] = p->cx - MF_R(0.5) * p->ax + sa * p->bx; p->y[3] = p->cy - MF_R(0.5) * p->ay + sa * p->by;
     }
     p->rect = (p->ay == MF_R(0.0) && p->bx == MF_R(0.0)) || (p->ax == MF_R(0.0) && p->by == MF_R(0.0));
-    p->row0 = (int)MF_FLOOR((p->cy - ey) / H);
-    p->row1 = (int)MF_FLOOR((p->cy + ey) / H);
+    p->row0 = p->cy - ey >= MF_R(0.0) ? 0 : (int)MF_FLOOR((p->cy - ey) / H);   /* cy is in [0, H) */
+    p->row1 = p->cy + ey < H ? 0 : (int)MF_FLOOR((p->cy + ey) / H);
     if (p->row1 > p->row0 && p->cy + ey == (mf_real)p->row1 * H) --p->row1;
     /* narrower than a period both ways: no full period and at most 4 cut
      * cells, so the count is only needed for wider footprints */
@@ -5281,11 +5286,11 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
     }
     for (i = 0; i < s->n; ++i) s->w[i] = p->full > MF_R(0.0) ? p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]) : MF_R(0.0);
     if (direct && !p->few) {
-        /* wanted bins with fewer texels than half the bounding box: their
-         * lists (kd traversal) cost less than visiting the box */
+        /* wanted bins with fewer than 8 times the box's texels: their kd
+         * traversal costs less than visiting the box (measured) */
         double texels = 0.0;
         for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
-        if (2.0 * texels < (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
+        if (texels < 8.0 * (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
     }
     if (direct && !mf__ibm_direct_any(ibm, p, s, 0, 0, 0)) return;   /* no wanted texel: all 0 */
     tot = p->full * (mf_real)ibm->width * (mf_real)ibm->height;
@@ -5345,8 +5350,8 @@ MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *b
             mf_real dx, dy;
             mf__ibm_unmorton(ibm->kx, ibm->ky, mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), &x, &y);
             dx = (mf_real)x - cx; dy = (mf_real)y - cy;   /* texel center minus footprint center */
-            dx -= W * MF_FLOOR(dx / W + MF_R(0.5));
-            dy -= H * MF_FLOOR(dy / H + MF_R(0.5));
+            if (!(MF_FABS(dx) <= MF_R(0.5) * W)) dx -= W * MF_FLOOR(dx / W + MF_R(0.5));   /* nearest period */
+            if (!(MF_FABS(dy) <= MF_R(0.5) * H)) dy -= H * MF_FLOOR(dy / H + MF_R(0.5));
             if (MF_FABS(dx) < ex && MF_FABS(dy) < ey) return 0;
         }
     }
@@ -5410,37 +5415,32 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
-    {   /* the non-empty bins of the neighbourhood: none, or none of their
-         * texels near the footprint, returns before any footprint work */
-        int nb = 0, near[MF_IBM_MAX_WINDOW];
+    mf__ibm_footprint(ibm, f, &p);
+    if (p.mode == MF__IBM_NONE) return MF_R(0.0);
+    /* a footprint of a few texels: their bins first (index only) */
+    if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_any(ibm, &p, (const mf__ibm_set *)0, cx, cy, r)) return MF_R(0.0);
+    mf__ibm_set_init(&s, cx, cy, r);
+    {   /* the non-empty bins of the neighbourhood (none, or none of their
+         * texels near the footprint: 0); for a footprint of many texels
+         * only those that face wo (and wi when only f is wanted), which
+         * spares their traversal (small ones are checked after their weights) */
+        int nb = 0, near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW];
         for (dy = -r; dy <= r; ++dy)
             for (dx = -r; dx <= r; ++dx) {
                 int j = (cx + dx) + b * (cy + dy);
                 if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-                if (!mf__ibm_bin_empty(ibm, j)) near[nb++] = j;
+                if (!mf__ibm_bin_empty(ibm, j)) { near[nb] = j; ndx[nb] = dx; ndy[nb] = dy; ++nb; }
             }
-        if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
-    }
-    mf__ibm_footprint(ibm, f, &p);
-    if (p.mode == MF__IBM_NONE) return MF_R(0.0);
-    if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_any(ibm, &p, (const mf__ibm_set *)0, cx, cy, r)) return MF_R(0.0);
-    mf__ibm_set_init(&s, cx, cy, r);
-    /* the non-empty bins of the neighbourhood; for a footprint of many
-     * texels only those that face wo (and wi when only f is wanted), which
-     * spares their traversal (small ones are checked after their weights) */
-    for (dy = -r; dy <= r; ++dy)
-        for (dx = -r; dx <= r; ++dx) {
-            int j = (cx + dx) + b * (cy + dy);
-            mf_vec3 t;
-            if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-            if (mf__ibm_bin_empty(ibm, j)) continue;
+        if (nb == 0 || (!p.few && mf__ibm_far(ibm, f, near, nb))) return MF_R(0.0);
+        for (i = 0; i < nb; ++i) {
             if (p.mode == MF__IBM_EXACT && !p.direct) {
-                t = mf_ibm_bin_normal(ibm, j);
+                mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
                 if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
             }
-            mf__ibm_set_add(&s, dx, dy, j);
+            mf__ibm_set_add(&s, ndx[i], ndy[i], near[i]);
         }
+    }
     if (s.n == 0) return MF_R(0.0);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
