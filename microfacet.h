@@ -5018,19 +5018,18 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
     {   /* texels [ix0, ix1) x [iy0, iy1) wholly inside (area 1 without
-         * clipping): the rectangle itself, or the largest square about the
-         * vertex mean that every edge keeps, less a margin of 0.05 texel so
+         * clipping): the rectangle itself, or a square about the vertex
+         * mean that every edge keeps, less a margin of 0.05 texel so
          * that these texels pass mf__ibm_texel_area's test as well */
         mf_real mx = MF_R(0.0), my = MF_R(0.0), h = MF_BIG, x0, x1, y0, y1;
         if (pc->rect) { x0 = pc->rx0; x1 = pc->rx1; y0 = pc->ry0; y1 = pc->ry1; }
         else {
             for (i = 0; i < m; ++i) { mx += pc->x[i]; my += pc->y[i]; }
             mx /= (mf_real)m; my /= (mf_real)m;
-            for (i = 0; i < m; ++i) {
-                mf_real w = MF_FABS(pc->ea[i]) + MF_FABS(pc->eb[i]);
-                if (w > MF_R(0.0)) h = mf_min(h, (pc->ea[i] * mx + pc->eb[i] * my + pc->ec[i]) / w);
-            }
-            h = MF_R(0.999) * h - MF_R(0.05);
+            /* unit normals: |a| + |b| <= sqrt 2, so d / sqrt 2 is a half side every edge keeps */
+            for (i = 0; i < m; ++i)
+                if (pc->ea[i] != MF_R(0.0) || pc->eb[i] != MF_R(0.0)) h = mf_min(h, pc->ea[i] * mx + pc->eb[i] * my + pc->ec[i]);
+            h = MF_R(0.7064) * h - MF_R(0.05);
             x0 = mx - h; x1 = mx + h; y0 = my - h; y1 = my + h;
         }
         pc->ix0 = pc->ix1 = pc->iy0 = pc->iy1 = 0;
