@@ -59,9 +59,7 @@
  * bit, so no pointers are stored at all. */
 #define MF_IBM_MAGIC 0x4d464942u          /* "BIFM" in little-endian bytes */
 #define MF_IBM_VERSION 1u
-#ifndef MF_IBM_LEAF
-#define MF_IBM_LEAF 24                    /* leaf size L of Sec. 5.4.4 (10 there; 24 measured faster with exact areas) */
-#endif
+#define MF_IBM_LEAF 24                    /* leaf size L of Sec. 5.4.4 (10 there; 24 measured faster here) */
 #define MF_IBM_TREE_MIN 32                /* bins this large store the top of their kd-tree */
 #define MF_IBM_MAX_RES 1024               /* bins per axis at most (index memory b^2) */
 #define MF_IBM_MAX_RADIUS 8               /* neighbourhood radius in bins at most */
