@@ -452,6 +452,12 @@ MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_fresnel(mf_real cos_theta_o, mf_real alpha);
 MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha);
+/* The same for the Beckmann BRDF (table 14_ltc_table_beckmann.h, same layout,
+ * 64 x 64, fitted by mf_ltc_table_build in about 200 s). */
+MFDEF mf_ltc mf_ltc_beckmann(mf_real cos_theta_o, mf_real alpha);
+MFDEF mf_real mf_ltc_beckmann_albedo(mf_real cos_theta_o, mf_real alpha);
+MFDEF mf_real mf_ltc_beckmann_fresnel(mf_real cos_theta_o, mf_real alpha);
+MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha);
 #endif
 /* @impl */
 /* ---- LTC fitting ---- */
@@ -818,6 +824,37 @@ MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha)
 {
     int n;
     const float *t = mf__ltc_ggx_data(&n);
+    if (n_theta) *n_theta = n;
+    if (n_alpha) *n_alpha = n;
+    return t;
+}
+static const float *mf__ltc_beckmann_data(int *n);   /* 14_ltc_table_beckmann.h */
+MFDEF mf_ltc mf_ltc_beckmann(mf_real cos_theta_o, mf_real alpha)
+{
+    int n;
+    const float *t = mf__ltc_beckmann_data(&n);
+    return mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, 0);
+}
+MFDEF mf_real mf_ltc_beckmann_albedo(mf_real cos_theta_o, mf_real alpha)
+{
+    int n;
+    const float *t = mf__ltc_beckmann_data(&n);
+    mf_real a;
+    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, &a, 0);
+    return a;
+}
+MFDEF mf_real mf_ltc_beckmann_fresnel(mf_real cos_theta_o, mf_real alpha)
+{
+    int n;
+    const float *t = mf__ltc_beckmann_data(&n);
+    mf_real f;
+    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, &f);
+    return f;
+}
+MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha)
+{
+    int n;
+    const float *t = mf__ltc_beckmann_data(&n);
     if (n_theta) *n_theta = n;
     if (n_alpha) *n_alpha = n;
     return t;
