@@ -249,10 +249,11 @@ static void test_ggx_table_data(void)
             for (k = 4; k < 6; ++k) if (fabs(a[k] - b[k]) > wa) wa = fabs(a[k] - b[k]);
         }
     mf_ltc_table_release(&t);
-    snprintf(msg, sizeof msg, "refitted entries match the shipped table (matrix %.2g of its scale, albedo/fresnel %.2g)", wm, wa);
-    /* the Nelder-Mead fits stop within about 2e-3 of the optimum, depending on
-     * the starting guess (each table entry starts from its neighbour's fit) */
-    MFT_CHECK(wm < MFT_TOL(3e-3, 1e-2) && wa < MFT_TOL(1e-5, 1e-3), msg);
+    /* the matrices are the fit refined on polygons (tools/ltc_fit.c; checked
+     * in test_ggx_refined): only the albedo and Fresnel columns must match */
+    if (mft_verbose) printf("    shipped GGX matrices vs the plain refit: %.2g of their scale\n", wm);
+    snprintf(msg, sizeof msg, "refitted albedo and Fresnel columns match the shipped table (%.2g)", wa);
+    MFT_CHECK(wa < MFT_TOL(1e-5, 1e-3), msg);
     for (j = 0; j < 64; j += 9)
         for (i = 0; i < 64; i += 7) {
             double tt = i / 63.0, v = j / 63.0, ct = 1.0 - tt * tt, al = v * v;
@@ -357,18 +358,20 @@ static void square_at(mf_vec3 *p, mf_vec3 c, double h)
     p[3] = mf_add(c, mf_add(mf_scale(u, (mf_real)h), mf_scale(v, (mf_real)-h)));
 }
 
-/* Off-node accuracy of the GGX table between rows of small alpha (0.003 to
- * 0.04, where the matrix entries grow like 1 / alpha): the integral of the
- * looked-up LTC over squares around and beside the mirror direction (0.5 to
- * 4 lobe widths) against that of a direct fit at the same (cos, alpha), and
- * the same at the nodes. Blending the stored form (middle entry 1) keeps the
- * off-node error near the on-node one; blending the form with a last entry
- * of 1 (reimplemented here) is shown for comparison. */
+/* Off-node accuracy of a table between rows of small alpha (0.003 to 0.04,
+ * where the matrix entries grow like 1 / alpha), on the built-in Beckmann
+ * table (plain mf_ltc_table_build fits; the GGX entries are refined beyond
+ * the direct fit): the integral of the looked-up LTC over squares around and
+ * beside the mirror direction (0.5 to 4 lobe widths) against that of a
+ * direct fit at the same (cos, alpha), and the same at the nodes. Blending
+ * the stored form (middle entry 1) keeps the off-node error near the on-node
+ * one; blending the form with a last entry of 1 (reimplemented here) is
+ * shown for comparison. */
 static void test_off_node(void)
 {
     const int rows[] = { 3, 5, 7, 9, 11 }, cols[] = { 4, 20, 36, 50 };
     int n, na, ri, ci, q, half, cnt[2] = { 0, 0 };
-    const float *t = mf_ltc_ggx_table(&n, &na);
+    const float *t = mf_ltc_beckmann_table(&n, &na);
     double sum[2] = { 0, 0 }, mx[2] = { 0, 0 }, sum_old = 0, mx_old = 0;
     char msg[200];
     for (half = 0; half < 2; ++half)
@@ -377,8 +380,8 @@ static void test_off_node(void)
                 double v = (rows[ri] + 0.5 * half) / 63.0, tt = (cols[ci] + 0.5 * half) / 63.0, al = v * v, ct = 1 - tt * tt;
                 double st = sqrt(1 - ct * ct);
                 mf_ltc_fit_result fr;
-                mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
-                mf_ltc l = mf_ltc_ggx((mf_real)ct, (mf_real)al), lo;
+                mf_ndf d = mf_beckmann((mf_real)al, (mf_real)al);
+                mf_ltc l = mf_ltc_beckmann((mf_real)ct, (mf_real)al), lo;
                 mf_ltc_fit(&d, NULL, NULL, (mf_real)ct, NULL, &fr);
                 {   /* the old blend: entries over the last one, i.e. [a/d3 0 b/d3; 0 1/d3 0; c/d3 0 1] */
                     int ix = cols[ci], iy = rows[ri], k, c2;
@@ -410,7 +413,7 @@ static void test_off_node(void)
                     }
                 }
             }
-    printf("    GGX table vs direct fits, alpha 0.003-0.04: on-node mean %.4f max %.4f (%d squares); off-node mean %.4f max %.4f"
+    printf("    Beckmann table vs direct fits, alpha 0.003-0.04: on-node mean %.4f max %.4f (%d squares); off-node mean %.4f max %.4f"
            " (blending the last-entry-1 form: mean %.4f max %.4f)\n", sum[0] / cnt[0], mx[0], cnt[0], sum[1] / cnt[1], mx[1],
            sum_old / cnt[1], mx_old);
     snprintf(msg, sizeof msg, "off-node LTC lookup vs direct fit: mean %.4f (on-node %.4f), max %.4f", sum[1] / cnt[1], sum[0] / cnt[0], mx[1]);
@@ -701,8 +704,12 @@ static void test_broad_lights(void)
 {
     static broad_light ls[512];
     /* bounds slightly above the measured values (see the printed lines) */
-    static const double band_tol[3][3] = { { 0.49, 0.60, 0.27 }, { 0.34, 0.40, 0.20 }, { 0.14, 0.23, 0.13 } };
-    const double mean_tol = 0.29, near_tol = 0.065, off_tol = 0.52;
+    /* measured (float and double alike): mean 0.1951, near 0.0863, away 0.3038;
+     * bands (views x alpha) 0.437 0.489 0.123 / 0.235 0.209 0.066 / 0.103 0.105 0.034.
+     * The published table (Heitz et al. 2016, ltc_code) measured on the same
+     * lights outside this project: mean 0.2857, near 0.0609, away 0.5105 */
+    static const double band_tol[3][3] = { { 0.45, 0.50, 0.13 }, { 0.245, 0.22, 0.07 }, { 0.11, 0.11, 0.037 } };
+    const double mean_tol = 0.20, near_tol = 0.09, off_tol = 0.31;
     double sum = 0, sn = 0, so = 0, band[3][3] = { { 0 } };
     int cnt[3][3] = { { 0 } }, n = broad_lights(ls), i, a, v, nn = 0;
     char msg[200];
@@ -729,6 +736,66 @@ static void test_broad_lights(void)
             snprintf(msg, sizeof msg, "GGX table, broad lights, view band %d x roughness band %d: mean relative error %.4f", v, a, band[v][a] / cnt[v][a]);
             MFT_CHECK(band[v][a] / cnt[v][a] < band_tol[v][a], msg);
         }
+}
+
+/* The shipped GGX matrices are the plain fit (mf_ltc_table_build) refined on
+ * integrated polygons: at the nodes 0, 21, 42, 63 of both axes (a 4 x 4
+ * refit) both are compared on 8 squares per node (4 around the mirror
+ * direction, 4 away from it, drawn like the broad-light set) against
+ * quadrature of the true BRDF cos: the refined entries must be the better
+ * ones on the whole and away from the lobe, and stay close around it. */
+static void test_ggx_refined(void)
+{
+    mf_ltc_table t;
+    const float *s = mf_ltc_ggx_table(NULL, NULL);
+    double e_fit[2] = { 0, 0 }, e_ship[2] = { 0, 0 };
+    int i, j, k, cnt[2] = { 0, 0 };
+    char msg[220];
+    if (mf_ltc_table_build(&t, MF_NDF_GGX, MF_R(2.0), 4, 4, NULL, NULL) != MF_SUCCESS) { MFT_CHECK(0, "refit 4 x 4 GGX table"); return; }
+    broad_state = 0x2545f4914f6cdd1dULL;
+    for (j = 0; j < 4; ++j)
+        for (i = 0; i < 4; ++i) {
+            double tt = i / 3.0, v = j / 3.0, ct = fmax(1.0 - tt * tt, 1e-3), al = fmax(v * v, 1e-3), st = sqrt(1 - ct * ct);
+            double w = fmin(2.0 * atan(al), 1.0), r[3];
+            const float *a = t.data + 6 * (j * 4 + i), *b = s + 6 * (21 * j * 64 + 21 * i);
+            mf_ltc la = mf_ltc_from_inverse((mf_real)a[0], (mf_real)a[1], MF_R(1.0), (mf_real)a[2], (mf_real)a[3]);
+            mf_ltc lb = mf_ltc_from_inverse((mf_real)b[0], (mf_real)b[1], MF_R(1.0), (mf_real)b[2], (mf_real)b[3]);
+            mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
+            mf_vec3 wo = mf_vec3_make((mf_real)st, 0, (mf_real)ct);
+            r[0] = -st; r[1] = 0; r[2] = ct;
+            for (k = 0; k < 8; ++k) {
+                broad_light l;
+                double c[3], ref;
+                if (k < 4) {
+                    broad_tilt(r, 0.4 * k * w, 2 * PI_D * broad_u01(), c);
+                    if (c[2] < 0.05) { double f = sqrt((1 - 0.0025) / (c[0] * c[0] + c[1] * c[1])); c[0] *= f; c[1] *= f; c[2] = 0.05; }
+                    broad_square(&l, c, fmin((0.3 + 0.6 * k) * w, 1.2));
+                } else {
+                    double dd;
+                    do {
+                        double z = 0.1 + 0.9 * broad_u01(), ph = 2 * PI_D * broad_u01(), sn = sqrt(1 - z * z);
+                        c[0] = sn * cos(ph); c[1] = sn * sin(ph); c[2] = z;
+                        dd = acos(fmax(-1.0, fmin(1.0, c[0] * r[0] + c[1] * r[1] + c[2] * r[2])));
+                    } while (dd < fmin(3.0 * w, 1.2));
+                    broad_square(&l, c, 0.05 + 0.35 * broad_u01());
+                }
+                ref = broad_reference(&d, wo, &l);
+                if (!(ref > 1e-12)) continue;
+                e_fit[k < 4] += fabs((double)a[4] * (double)mf_ltc_integrate(&la, l.p, 4, 1) - ref) / ref;
+                e_ship[k < 4] += fabs((double)b[4] * (double)mf_ltc_integrate(&lb, l.p, 4, 1) - ref) / ref;
+                ++cnt[k < 4];
+            }
+        }
+    mf_ltc_table_release(&t);
+    printf("    GGX shipped (refined) vs plain fit at 16 nodes: around the mirror direction %.4f vs %.4f, away %.4f vs %.4f (%d + %d squares)\n",
+           e_ship[1] / cnt[1], e_fit[1] / cnt[1], e_ship[0] / cnt[0], e_fit[0] / cnt[0], cnt[1], cnt[0]);
+    snprintf(msg, sizeof msg, "refined GGX entries beat the plain fit on squares (all %.4f vs %.4f, away %.4f vs %.4f)",
+             (e_ship[0] + e_ship[1]) / (cnt[0] + cnt[1]), (e_fit[0] + e_fit[1]) / (cnt[0] + cnt[1]), e_ship[0] / cnt[0], e_fit[0] / cnt[0]);
+    /* measured: all 0.53 of the plain fit's error (float 0.58), away 0.62 (float 0.70) */
+    MFT_CHECK(cnt[0] > 40 && cnt[1] > 50 && e_ship[0] + e_ship[1] < 0.8 * (e_fit[0] + e_fit[1]) && e_ship[0] < 0.8 * e_fit[0], msg);
+    snprintf(msg, sizeof msg, "refined GGX entries stay close to the true lobe around the mirror direction (%.4f, plain fit %.4f)",
+             e_ship[1] / cnt[1], e_fit[1] / cnt[1]);
+    MFT_CHECK(e_ship[1] / cnt[1] < 0.05, msg);   /* measured 0.038 */
 }
 
 /* The built-in Beckmann table (tools/ltc_fit.c --module beckmann): the same
@@ -888,6 +955,7 @@ void test_ltc(void)
     test_ggx_table(&r);
     test_beckmann_table(&r);
     test_broad_lights();
+    test_ggx_refined();
     /* normalization */
     for (i = 0; i < 6; ++i) {
         mf_ltc l = random_ltc(&r, i < 3 ? 0.4 : 0.9);

@@ -266,8 +266,9 @@ static void print_module_head(int n, const char *name, const char *fn, const cha
            "static const float *%s(int *n)\n"
            "{\n"
            "    static const float data[%d * %d * 6] = {\n", name, n, n, name,
-           refined ? ", then each entry refitted on the integrals of 40 training squares\n"
-                     " * around and away from the mirror direction: tools/ltc_fit.c" : "",
+           refined ? ", then each entry refitted on its integrals over 40\n"
+                     " * training squares around and away from the mirror direction, see\n"
+                     " * tools/ltc_fit.c" : "",
            acc, acc, acc, acc, fn, n, n);
 }
 
