@@ -13,7 +13,7 @@
  * (measured 0.16; Eq. 7 was fitted to the whole lobe). The built-in GGX
  * table against Monte Carlo of the true BRDF cos over quads near and beside
  * the mirror direction, 5 roughnesses x 4 view angles: mean relative error
- * below 0.1 (measured 0.069), max below 0.5 (measured 0.44 at theta_o = 81
+ * below 0.06 (measured 0.046), max below 0.4 (measured 0.315 at theta_o = 81
  * degrees, where the LTC lobe spills below the true horizon). */
 #include "mf_test.h"
 #include "quad.h"
@@ -21,8 +21,8 @@
 #include <stdlib.h>
 
 static const double PI_D = 3.14159265358979323846;
-#define MFT_LTC_MEAN_TOL 0.1   /* measured 0.069 */
-#define MFT_LTC_MAX_TOL 0.5    /* measured 0.44, at theta_o = 81 deg */
+#define MFT_LTC_MEAN_TOL 0.06  /* measured 0.046 */
+#define MFT_LTC_MAX_TOL 0.4    /* measured 0.315, at theta_o = 81 deg */
 
 static mf_ltc random_ltc(mft_rng *r, double spread)
 {
@@ -704,12 +704,13 @@ static void test_broad_lights(void)
 {
     static broad_light ls[512];
     /* bounds slightly above the measured values (see the printed lines) */
-    /* measured (float and double alike): mean 0.1951, near 0.0863, away 0.3038;
-     * bands (views x alpha) 0.437 0.489 0.123 / 0.235 0.209 0.066 / 0.103 0.105 0.034.
+    /* measured (float and double alike): mean 0.1948, near 0.0564, away 0.3331;
+     * bands (views x alpha) 0.447 0.511 0.125 / 0.261 0.147 0.059 / 0.088 0.111 0.032.
      * The published table (Heitz et al. 2016, ltc_code) measured on the same
-     * lights outside this project: mean 0.2857, near 0.0609, away 0.5105 */
-    static const double band_tol[3][3] = { { 0.45, 0.50, 0.13 }, { 0.245, 0.22, 0.07 }, { 0.11, 0.11, 0.037 } };
-    const double mean_tol = 0.20, near_tol = 0.09, off_tol = 0.31;
+     * lights outside this project: mean 0.2857, near 0.0609, away 0.5105; the
+     * plain fit (mf_ltc_table_build): 0.2858, 0.0619, 0.5097 */
+    static const double band_tol[3][3] = { { 0.46, 0.525, 0.13 }, { 0.27, 0.152, 0.062 }, { 0.092, 0.115, 0.034 } };
+    const double mean_tol = 0.20, near_tol = 0.06, off_tol = 0.34;
     double sum = 0, sn = 0, so = 0, band[3][3] = { { 0 } };
     int cnt[3][3] = { { 0 } }, n = broad_lights(ls), i, a, v, nn = 0;
     char msg[200];
@@ -791,11 +792,11 @@ static void test_ggx_refined(void)
            e_ship[1] / cnt[1], e_fit[1] / cnt[1], e_ship[0] / cnt[0], e_fit[0] / cnt[0], cnt[1], cnt[0]);
     snprintf(msg, sizeof msg, "refined GGX entries beat the plain fit on squares (all %.4f vs %.4f, away %.4f vs %.4f)",
              (e_ship[0] + e_ship[1]) / (cnt[0] + cnt[1]), (e_fit[0] + e_fit[1]) / (cnt[0] + cnt[1]), e_ship[0] / cnt[0], e_fit[0] / cnt[0]);
-    /* measured: all 0.53 of the plain fit's error (float 0.58), away 0.62 (float 0.70) */
+    /* measured: all 0.49 of the plain fit's error (float 0.50), away 0.61 (float 0.63) */
     MFT_CHECK(cnt[0] > 40 && cnt[1] > 50 && e_ship[0] + e_ship[1] < 0.8 * (e_fit[0] + e_fit[1]) && e_ship[0] < 0.8 * e_fit[0], msg);
     snprintf(msg, sizeof msg, "refined GGX entries stay close to the true lobe around the mirror direction (%.4f, plain fit %.4f)",
              e_ship[1] / cnt[1], e_fit[1] / cnt[1]);
-    MFT_CHECK(e_ship[1] / cnt[1] < 0.05, msg);   /* measured 0.038 */
+    MFT_CHECK(e_ship[1] / cnt[1] < 0.03, msg);   /* measured 0.020 */
 }
 
 /* The built-in Beckmann table (tools/ltc_fit.c --module beckmann): the same
