@@ -13,7 +13,7 @@
  * (measured 0.16; Eq. 7 was fitted to the whole lobe). The built-in GGX
  * table against Monte Carlo of the true BRDF cos over quads near and beside
  * the mirror direction, 5 roughnesses x 4 view angles: mean relative error
- * below 0.1 (measured 0.069), max below 0.5 (measured 0.44 at theta_o = 81
+ * below 0.06 (measured 0.046), max below 0.4 (measured 0.315 at theta_o = 81
  * degrees, where the LTC lobe spills below the true horizon). */
 #include "mf_test.h"
 #include "quad.h"
@@ -21,8 +21,8 @@
 #include <stdlib.h>
 
 static const double PI_D = 3.14159265358979323846;
-#define MFT_LTC_MEAN_TOL 0.1   /* measured 0.069 */
-#define MFT_LTC_MAX_TOL 0.5    /* measured 0.44, at theta_o = 81 deg */
+#define MFT_LTC_MEAN_TOL 0.06  /* measured 0.046 */
+#define MFT_LTC_MAX_TOL 0.4    /* measured 0.315, at theta_o = 81 deg */
 
 static mf_ltc random_ltc(mft_rng *r, double spread)
 {
@@ -249,10 +249,11 @@ static void test_ggx_table_data(void)
             for (k = 4; k < 6; ++k) if (fabs(a[k] - b[k]) > wa) wa = fabs(a[k] - b[k]);
         }
     mf_ltc_table_release(&t);
-    snprintf(msg, sizeof msg, "refitted entries match the shipped table (matrix %.2g of its scale, albedo/fresnel %.2g)", wm, wa);
-    /* the Nelder-Mead fits stop within about 2e-3 of the optimum, depending on
-     * the starting guess (each table entry starts from its neighbour's fit) */
-    MFT_CHECK(wm < MFT_TOL(3e-3, 1e-2) && wa < MFT_TOL(1e-5, 1e-3), msg);
+    /* the matrices are the fit refined on polygons (tools/ltc_fit.c; checked
+     * in test_ggx_refined): only the albedo and Fresnel columns must match */
+    if (mft_verbose) printf("    shipped GGX matrices vs the plain refit: %.2g of their scale\n", wm);
+    snprintf(msg, sizeof msg, "refitted albedo and Fresnel columns match the shipped table (%.2g)", wa);
+    MFT_CHECK(wa < MFT_TOL(1e-5, 1e-3), msg);
     for (j = 0; j < 64; j += 9)
         for (i = 0; i < 64; i += 7) {
             double tt = i / 63.0, v = j / 63.0, ct = 1.0 - tt * tt, al = v * v;
@@ -357,18 +358,20 @@ static void square_at(mf_vec3 *p, mf_vec3 c, double h)
     p[3] = mf_add(c, mf_add(mf_scale(u, (mf_real)h), mf_scale(v, (mf_real)-h)));
 }
 
-/* Off-node accuracy of the GGX table between rows of small alpha (0.003 to
- * 0.04, where the matrix entries grow like 1 / alpha): the integral of the
- * looked-up LTC over squares around and beside the mirror direction (0.5 to
- * 4 lobe widths) against that of a direct fit at the same (cos, alpha), and
- * the same at the nodes. Blending the stored form (middle entry 1) keeps the
- * off-node error near the on-node one; blending the form with a last entry
- * of 1 (reimplemented here) is shown for comparison. */
+/* Off-node accuracy of a table between rows of small alpha (0.003 to 0.04,
+ * where the matrix entries grow like 1 / alpha), on the built-in Beckmann
+ * table (plain mf_ltc_table_build fits; the GGX entries are refined beyond
+ * the direct fit): the integral of the looked-up LTC over squares around and
+ * beside the mirror direction (0.5 to 4 lobe widths) against that of a
+ * direct fit at the same (cos, alpha), and the same at the nodes. Blending
+ * the stored form (middle entry 1) keeps the off-node error near the on-node
+ * one; blending the form with a last entry of 1 (reimplemented here) is
+ * shown for comparison. */
 static void test_off_node(void)
 {
     const int rows[] = { 3, 5, 7, 9, 11 }, cols[] = { 4, 20, 36, 50 };
     int n, na, ri, ci, q, half, cnt[2] = { 0, 0 };
-    const float *t = mf_ltc_ggx_table(&n, &na);
+    const float *t = mf_ltc_beckmann_table(&n, &na);
     double sum[2] = { 0, 0 }, mx[2] = { 0, 0 }, sum_old = 0, mx_old = 0;
     char msg[200];
     for (half = 0; half < 2; ++half)
@@ -377,8 +380,8 @@ static void test_off_node(void)
                 double v = (rows[ri] + 0.5 * half) / 63.0, tt = (cols[ci] + 0.5 * half) / 63.0, al = v * v, ct = 1 - tt * tt;
                 double st = sqrt(1 - ct * ct);
                 mf_ltc_fit_result fr;
-                mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
-                mf_ltc l = mf_ltc_ggx((mf_real)ct, (mf_real)al), lo;
+                mf_ndf d = mf_beckmann((mf_real)al, (mf_real)al);
+                mf_ltc l = mf_ltc_beckmann((mf_real)ct, (mf_real)al), lo;
                 mf_ltc_fit(&d, NULL, NULL, (mf_real)ct, NULL, &fr);
                 {   /* the old blend: entries over the last one, i.e. [a/d3 0 b/d3; 0 1/d3 0; c/d3 0 1] */
                     int ix = cols[ci], iy = rows[ri], k, c2;
@@ -410,7 +413,7 @@ static void test_off_node(void)
                     }
                 }
             }
-    printf("    GGX table vs direct fits, alpha 0.003-0.04: on-node mean %.4f max %.4f (%d squares); off-node mean %.4f max %.4f"
+    printf("    Beckmann table vs direct fits, alpha 0.003-0.04: on-node mean %.4f max %.4f (%d squares); off-node mean %.4f max %.4f"
            " (blending the last-entry-1 form: mean %.4f max %.4f)\n", sum[0] / cnt[0], mx[0], cnt[0], sum[1] / cnt[1], mx[1],
            sum_old / cnt[1], mx_old);
     snprintf(msg, sizeof msg, "off-node LTC lookup vs direct fit: mean %.4f (on-node %.4f), max %.4f", sum[1] / cnt[1], sum[0] / cnt[0], mx[1]);
@@ -566,6 +569,379 @@ static void test_export(mft_rng *r)
     }
 }
 
+/* Broad-light accuracy of the built-in GGX table: 512 square lights at unit
+ * distance, 8 views (cos 0.05 to 1) x 8 roughnesses (alpha 0.01 to 1) x 8
+ * lights: 4 around the mirror direction (half-widths 0.25 to 2 lobe widths,
+ * offsets 0 to 1.5 widths, lobe width min(2 atan(alpha), 1)) and 4 away from
+ * it (centres uniform over z >= 0.1 at least min(3 widths, 1.2 rad) from the
+ * mirror direction, half-widths 0.05 to 0.4 rad). The table's albedo times
+ * the LTC integral against composite Gauss-Legendre quadrature of the true
+ * BRDF cos over each square (graded around the mirror direction, cut at the
+ * horizon; halving the panels changes it by < 3e-5): the mean relative
+ * error overall, near, away, and per view and roughness band. */
+typedef struct { double ct, alpha; mf_vec3 p[4]; int near; } broad_light;
+static unsigned long long broad_state;
+static double broad_u01(void)
+{
+    broad_state ^= broad_state << 13; broad_state ^= broad_state >> 7; broad_state ^= broad_state << 17;
+    return (double)(broad_state >> 11) * (1.0 / 9007199254740992.0);
+}
+/* u along the steepest ascent of z in the plane through unit c */
+static void broad_frame(const double *c, double *u, double *v)
+{
+    double n;
+    int k;
+    u[0] = -c[2] * c[0]; u[1] = -c[2] * c[1]; u[2] = 1.0 - c[2] * c[2];
+    n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if (n < 1e-9) { u[0] = 1.0; u[1] = u[2] = 0.0; }
+    else for (k = 0; k < 3; ++k) u[k] /= n;
+    v[0] = c[1] * u[2] - c[2] * u[1]; v[1] = c[2] * u[0] - c[0] * u[2]; v[2] = c[0] * u[1] - c[1] * u[0];
+}
+static void broad_square(broad_light *l, const double *c, double half)
+{
+    double u[3], v[3], h = tan(half);
+    int k;
+    broad_frame(c, u, v);
+    for (k = 0; k < 4; ++k) {
+        double sx = k < 2 ? -h : h, sy = (k == 1 || k == 2) ? h : -h;
+        l->p[k] = mf_vec3_make((mf_real)(c[0] + sx * u[0] + sy * v[0]), (mf_real)(c[1] + sx * u[1] + sy * v[1]),
+                               (mf_real)(c[2] + sx * u[2] + sy * v[2]));
+    }
+}
+static void broad_tilt(const double *a, double t, double ph, double *out)
+{
+    double u[3], v[3];
+    int k;
+    broad_frame(a, u, v);
+    for (k = 0; k < 3; ++k) out[k] = cos(t) * a[k] + sin(t) * (cos(ph) * u[k] + sin(ph) * v[k]);
+}
+static int broad_lights(broad_light *ls)
+{
+    static const double cts[8] = { 0.05, 0.12, 0.25, 0.4, 0.55, 0.7, 0.85, 1.0 };
+    static const double als[8] = { 0.01, 0.02, 0.05, 0.1, 0.2, 0.35, 0.6, 1.0 };
+    int i, j, k, n = 0;
+    broad_state = 0x9e3779b97f4a7c15ULL;
+    for (j = 0; j < 8; ++j)
+        for (i = 0; i < 8; ++i) {
+            double ct = cts[i], st = sqrt(1 - ct * ct), w = fmin(2.0 * atan(als[j]), 1.0), r[3];
+            r[0] = -st; r[1] = 0; r[2] = ct;
+            for (k = 0; k < 8; ++k) {
+                broad_light *l = &ls[n++];
+                double c[3];
+                l->ct = ct; l->alpha = als[j]; l->near = k < 4;
+                if (k < 4) {
+                    static const double off[4] = { 0.0, 0.5, 1.0, 1.5 }, size[4] = { 0.5, 1.0, 2.0, 4.0 };
+                    broad_tilt(r, off[k] * w, 2 * PI_D * broad_u01(), c);
+                    if (c[2] < 0.05) { double f = sqrt((1 - 0.0025) / (c[0] * c[0] + c[1] * c[1])); c[0] *= f; c[1] *= f; c[2] = 0.05; }
+                    broad_square(l, c, fmin(0.5 * size[k] * w, 1.2));
+                } else {
+                    double dmin = fmin(3.0 * w, 1.2), dd;
+                    do {
+                        double z = 0.1 + 0.9 * broad_u01(), ph = 2 * PI_D * broad_u01(), sn = sqrt(1 - z * z);
+                        c[0] = sn * cos(ph); c[1] = sn * sin(ph); c[2] = z;
+                        dd = acos(fmax(-1.0, fmin(1.0, c[0] * r[0] + c[1] * r[1] + c[2] * r[2])));
+                    } while (dd < dmin);
+                    broad_square(l, c, 0.05 + 0.35 * broad_u01());
+                }
+            }
+        }
+    return n;
+}
+static int broad_breaks(double lo, double hi, double c, double h, double hmax, double *b, int max)
+{
+    int n = 0;
+    double x = lo;
+    b[n++] = lo;
+    while (x < hi && n < max - 1) {
+        double step = fmax(h, fmin(hmax, 0.5 * fabs(x - c)));
+        if (x < c && x + step > c && c - x > 0.25 * h) step = c - x;
+        x = fmin(hi, x + step);
+        b[n++] = x;
+    }
+    return n;
+}
+/* integral of f cos over the square: dA / r^3 on the plane at unit distance */
+static double broad_reference(const mf_ndf *d, mf_vec3 wo, const broad_light *l)
+{
+    double c[3], u[3], v[3], h, bx[1024], by[1024], px = 1e9, py = 1e9, xlo, sum = 0.0, gx[8], gw[8];
+    int nx, ny, i, j, a, b, k;
+    mft_gl(8, gx, gw);
+    for (k = 0; k < 3; ++k) {
+        double q[4];
+        for (i = 0; i < 4; ++i) q[i] = k == 0 ? (double)l->p[i].x : k == 1 ? (double)l->p[i].y : (double)l->p[i].z;
+        c[k] = 0.25 * (q[0] + q[1] + q[2] + q[3]); u[k] = 0.5 * (q[3] - q[0]); v[k] = 0.5 * (q[1] - q[0]);
+    }
+    h = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    for (k = 0; k < 3; ++k) { u[k] /= h; v[k] /= h; }
+    {
+        double r[3], dn;
+        r[0] = -(double)wo.x; r[1] = -(double)wo.y; r[2] = (double)wo.z;
+        dn = r[0] * c[0] + r[1] * c[1] + r[2] * c[2];
+        if (dn > 1e-3) { px = (r[0] * u[0] + r[1] * u[1] + r[2] * u[2]) / dn; py = (r[0] * v[0] + r[1] * v[1] + r[2] * v[2]) / dn; }
+    }
+    xlo = -h;
+    if (u[2] > 1e-12 && -c[2] / u[2] > xlo) xlo = -c[2] / u[2];
+    if (xlo >= h) return 0.0;
+    nx = broad_breaks(xlo, h, px, 0.25 * fmax((double)d->ax, 1e-3), 0.125 * h, bx, 1024);
+    ny = broad_breaks(-h, h, py, 0.25 * fmax((double)d->ax, 1e-3), 0.125 * h, by, 1024);
+    for (i = 0; i + 1 < nx; ++i)
+        for (a = 0; a < 8; ++a) {
+            double x = bx[i] + (bx[i + 1] - bx[i]) * gx[a], wx = (bx[i + 1] - bx[i]) * gw[a];   /* nodes on [0, 1] */
+            for (j = 0; j + 1 < ny; ++j)
+                for (b = 0; b < 8; ++b) {
+                    double y = by[j] + (by[j + 1] - by[j]) * gx[b], wy = (by[j + 1] - by[j]) * gw[b];
+                    double q[3], r2, r;
+                    for (k = 0; k < 3; ++k) q[k] = c[k] + x * u[k] + y * v[k];
+                    if (q[2] <= 0.0) continue;
+                    r2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2]; r = sqrt(r2);
+                    sum += wx * wy * (double)mf_brdf(d, wo, mf_vec3_make((mf_real)(q[0] / r), (mf_real)(q[1] / r), (mf_real)(q[2] / r))) *
+                           (q[2] / r) / (r2 * r);
+                }
+        }
+    return sum;
+}
+static void test_broad_lights(void)
+{
+    static broad_light ls[512];
+    /* bounds slightly above the measured values (see the printed lines) */
+    /* measured (float and double alike): mean 0.1948, near 0.0564, away 0.3331;
+     * bands (views x alpha) 0.447 0.511 0.125 / 0.261 0.147 0.059 / 0.088 0.111 0.032.
+     * The published table (Heitz et al. 2016, ltc_code) measured on the same
+     * lights outside this project: mean 0.2857, near 0.0609, away 0.5105; the
+     * plain fit (mf_ltc_table_build): 0.2858, 0.0619, 0.5097 */
+    static const double band_tol[3][3] = { { 0.46, 0.525, 0.13 }, { 0.27, 0.152, 0.062 }, { 0.092, 0.115, 0.034 } };
+    const double mean_tol = 0.20, near_tol = 0.06, off_tol = 0.34;
+    double sum = 0, sn = 0, so = 0, band[3][3] = { { 0 } };
+    int cnt[3][3] = { { 0 } }, n = broad_lights(ls), i, a, v, nn = 0;
+    char msg[200];
+    for (i = 0; i < n; ++i) {
+        broad_light *l = &ls[i];
+        mf_ndf d = mf_ggx((mf_real)l->alpha, (mf_real)l->alpha);
+        mf_vec3 wo = mf_vec3_make((mf_real)sqrt(1 - l->ct * l->ct), 0, (mf_real)l->ct);
+        mf_ltc lt = mf_ltc_ggx((mf_real)l->ct, (mf_real)l->alpha);
+        double ref = broad_reference(&d, wo, l);
+        double e = fabs((double)mf_ltc_ggx_albedo((mf_real)l->ct, (mf_real)l->alpha) * (double)mf_ltc_integrate(&lt, l->p, 4, 1) - ref) / ref;
+        v = l->ct < 0.3 ? 0 : l->ct < 0.7 ? 1 : 2; a = l->alpha < 0.08 ? 0 : l->alpha < 0.3 ? 1 : 2;
+        sum += e; band[v][a] += e; ++cnt[v][a];
+        if (l->near) { sn += e; ++nn; } else so += e;
+    }
+    printf("    GGX table, broad lights (%d squares): mean relative error %.4f, around the mirror direction %.4f, away %.4f\n",
+           n, sum / n, sn / nn, so / (n - nn));
+    for (v = 0; v < 3; ++v)
+        printf("    views %s: alpha < 0.08 %.4f, 0.08-0.3 %.4f, >= 0.3 %.4f\n", v == 0 ? "cos < 0.3 " : v == 1 ? "cos 0.3-0.7" : "cos >= 0.7",
+               band[v][0] / cnt[v][0], band[v][1] / cnt[v][1], band[v][2] / cnt[v][2]);
+    snprintf(msg, sizeof msg, "GGX table over 512 broad lights: mean relative error %.4f (near %.4f, away %.4f)", sum / n, sn / nn, so / (n - nn));
+    MFT_CHECK(sum / n < mean_tol && sn / nn < near_tol && so / (n - nn) < off_tol, msg);
+    for (v = 0; v < 3; ++v)
+        for (a = 0; a < 3; ++a) {
+            snprintf(msg, sizeof msg, "GGX table, broad lights, view band %d x roughness band %d: mean relative error %.4f", v, a, band[v][a] / cnt[v][a]);
+            MFT_CHECK(band[v][a] / cnt[v][a] < band_tol[v][a], msg);
+        }
+}
+
+/* The shipped GGX matrices are the plain fit (mf_ltc_table_build) refined on
+ * integrated polygons: at the nodes 0, 21, 42, 63 of both axes (a 4 x 4
+ * refit) both are compared on 8 squares per node (4 around the mirror
+ * direction, 4 away from it, drawn like the broad-light set) against
+ * quadrature of the true BRDF cos: the refined entries must be the better
+ * ones on the whole and away from the lobe, and stay close around it. */
+static void test_ggx_refined(void)
+{
+    mf_ltc_table t;
+    const float *s = mf_ltc_ggx_table(NULL, NULL);
+    double e_fit[2] = { 0, 0 }, e_ship[2] = { 0, 0 };
+    int i, j, k, cnt[2] = { 0, 0 };
+    char msg[220];
+    if (mf_ltc_table_build(&t, MF_NDF_GGX, MF_R(2.0), 4, 4, NULL, NULL) != MF_SUCCESS) { MFT_CHECK(0, "refit 4 x 4 GGX table"); return; }
+    broad_state = 0x2545f4914f6cdd1dULL;
+    for (j = 0; j < 4; ++j)
+        for (i = 0; i < 4; ++i) {
+            double tt = i / 3.0, v = j / 3.0, ct = fmax(1.0 - tt * tt, 1e-3), al = fmax(v * v, 1e-3), st = sqrt(1 - ct * ct);
+            double w = fmin(2.0 * atan(al), 1.0), r[3];
+            const float *a = t.data + 6 * (j * 4 + i), *b = s + 6 * (21 * j * 64 + 21 * i);
+            mf_ltc la = mf_ltc_from_inverse((mf_real)a[0], (mf_real)a[1], MF_R(1.0), (mf_real)a[2], (mf_real)a[3]);
+            mf_ltc lb = mf_ltc_from_inverse((mf_real)b[0], (mf_real)b[1], MF_R(1.0), (mf_real)b[2], (mf_real)b[3]);
+            mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
+            mf_vec3 wo = mf_vec3_make((mf_real)st, 0, (mf_real)ct);
+            r[0] = -st; r[1] = 0; r[2] = ct;
+            for (k = 0; k < 8; ++k) {
+                broad_light l;
+                double c[3], ref;
+                if (k < 4) {
+                    broad_tilt(r, 0.4 * k * w, 2 * PI_D * broad_u01(), c);
+                    if (c[2] < 0.05) { double f = sqrt((1 - 0.0025) / (c[0] * c[0] + c[1] * c[1])); c[0] *= f; c[1] *= f; c[2] = 0.05; }
+                    broad_square(&l, c, fmin((0.3 + 0.6 * k) * w, 1.2));
+                } else {
+                    double dd;
+                    do {
+                        double z = 0.1 + 0.9 * broad_u01(), ph = 2 * PI_D * broad_u01(), sn = sqrt(1 - z * z);
+                        c[0] = sn * cos(ph); c[1] = sn * sin(ph); c[2] = z;
+                        dd = acos(fmax(-1.0, fmin(1.0, c[0] * r[0] + c[1] * r[1] + c[2] * r[2])));
+                    } while (dd < fmin(3.0 * w, 1.2));
+                    broad_square(&l, c, 0.05 + 0.35 * broad_u01());
+                }
+                ref = broad_reference(&d, wo, &l);
+                if (!(ref > 1e-12)) continue;
+                e_fit[k < 4] += fabs((double)a[4] * (double)mf_ltc_integrate(&la, l.p, 4, 1) - ref) / ref;
+                e_ship[k < 4] += fabs((double)b[4] * (double)mf_ltc_integrate(&lb, l.p, 4, 1) - ref) / ref;
+                ++cnt[k < 4];
+            }
+        }
+    mf_ltc_table_release(&t);
+    printf("    GGX shipped (refined) vs plain fit at 16 nodes: around the mirror direction %.4f vs %.4f, away %.4f vs %.4f (%d + %d squares)\n",
+           e_ship[1] / cnt[1], e_fit[1] / cnt[1], e_ship[0] / cnt[0], e_fit[0] / cnt[0], cnt[1], cnt[0]);
+    snprintf(msg, sizeof msg, "refined GGX entries beat the plain fit on squares (all %.4f vs %.4f, away %.4f vs %.4f)",
+             (e_ship[0] + e_ship[1]) / (cnt[0] + cnt[1]), (e_fit[0] + e_fit[1]) / (cnt[0] + cnt[1]), e_ship[0] / cnt[0], e_fit[0] / cnt[0]);
+    /* measured: all 0.49 of the plain fit's error (float 0.50), away 0.61 (float 0.63) */
+    MFT_CHECK(cnt[0] > 40 && cnt[1] > 50 && e_ship[0] + e_ship[1] < 0.8 * (e_fit[0] + e_fit[1]) && e_ship[0] < 0.8 * e_fit[0], msg);
+    snprintf(msg, sizeof msg, "refined GGX entries stay close to the true lobe around the mirror direction (%.4f, plain fit %.4f)",
+             e_ship[1] / cnt[1], e_fit[1] / cnt[1]);
+    MFT_CHECK(e_ship[1] / cnt[1] < 0.03, msg);   /* measured 0.020 */
+}
+
+/* The built-in Beckmann table (tools/ltc_fit.c --module beckmann): the same
+ * checks as the GGX table. Refit of a 4 x 4 table at the shipped nodes 0, 21,
+ * 42, 63; raw entries = lookups at the nodes; albedo and Fresnel columns
+ * against a midpoint rule of mf_brdf cos over the hemisphere; the lookup
+ * against Monte Carlo of the true Beckmann BRDF cos over quads around and
+ * beside the mirror direction (mean and max relative error asserted); the
+ * RGBA16F export of the table and its sampling convention. */
+#define MFT_LTC_BECK_MEAN_TOL 0.12   /* measured 0.103: the cosine lobe's tail (power -4) holds */
+#define MFT_LTC_BECK_MAX_TOL 0.95    /* 10-15% of the energy outside quads that hold 98% of the
+                                        Gaussian-tailed Beckmann lobe; max 0.898 at alpha 0.6,
+                                        81 degrees, beside the mirror direction */
+static void test_beckmann_table(mft_rng *r)
+{
+    mf_ltc_table t;
+    int n = 0, na = 0, i, j, k, a, c, count = 0;
+    const float *s = mf_ltc_beckmann_table(&n, &na);
+    double wm = 0.0, wa = 0.0, wacc = 0.0, wf = 0.0, sum = 0.0, worst = 0.0;
+    char msg[200];
+    MFT_CHECK(s != NULL && n == 64 && na == 64, "mf_ltc_beckmann_table: 64 x 64 entries");
+    if (!s || n != 64 || na != 64) return;
+    MFT_CHECK(s != mf_ltc_ggx_table(NULL, NULL), "the Beckmann table is its own data");
+    MFT_CHECK(mf_ltc_table_build(&t, MF_NDF_BECKMANN, MF_R(2.0), 4, 4, NULL, NULL) == MF_SUCCESS, "refit 4 x 4 Beckmann table");
+    for (j = 0; j < 4; ++j)
+        for (i = 0; i < 4; ++i) {
+            const float *x = t.data + 6 * (j * 4 + i), *y = s + 6 * (21 * j * 64 + 21 * i);
+            double scale = 0.0;
+            for (k = 0; k < 4; ++k) scale = fabs(y[k]) > scale ? fabs(y[k]) : scale;
+            for (k = 0; k < 4; ++k) {
+                if (fabs(x[k] - y[k]) / scale > wm) wm = fabs(x[k] - y[k]) / scale;
+                if (mft_verbose && fabs(x[k] - y[k]) / scale > 1e-3) printf("    Beckmann refit node %d %d entry %d: %g vs %g\n", j, i, k, x[k], y[k]);
+            }
+            for (k = 4; k < 6; ++k) if (fabs(x[k] - y[k]) > wa) wa = fabs(x[k] - y[k]);
+        }
+    mf_ltc_table_release(&t);
+    snprintf(msg, sizeof msg, "refitted Beckmann entries match the shipped table (matrix %.2g of its scale, albedo/fresnel %.2g)", wm, wa);
+    /* Nelder-Mead stops within a few 1e-3 of the optimum (measured 4.2e-3;
+     * float 0.019 at alpha 1e-3, 90 degrees, where every entry is below 2e-3) */
+    MFT_CHECK(wm < MFT_TOL(6e-3, 3e-2) && wa < MFT_TOL(1e-5, 1e-3), msg);
+    for (j = 0; j < 64; j += 9)
+        for (i = 0; i < 64; i += 7) {
+            double tt = i / 63.0, v = j / 63.0, ct = 1.0 - tt * tt, al = v * v;
+            const float *e = s + 6 * (j * 64 + i);
+            mf_ltc l, g;
+            if (ct < 1e-3 || al < 1e-3) continue;   /* the clamped ends */
+            l = mf_ltc_from_inverse((mf_real)e[0], (mf_real)e[1], MF_R(1.0), (mf_real)e[2], (mf_real)e[3]);
+            g = mf_ltc_beckmann((mf_real)ct, (mf_real)al);
+            for (k = 0; k < 9; ++k) {
+                double dk = fabs((double)l.Minv[k] / (double)l.Minv[8] - (double)g.Minv[k] / (double)g.Minv[8]);
+                if (dk / (fabs((double)l.Minv[k] / (double)l.Minv[8]) + 1.0) > wacc) wacc = dk / (fabs((double)l.Minv[k] / (double)l.Minv[8]) + 1.0);
+            }
+            if (fabs((double)mf_ltc_beckmann_albedo((mf_real)ct, (mf_real)al) - e[4]) > wacc) wacc = fabs((double)mf_ltc_beckmann_albedo((mf_real)ct, (mf_real)al) - e[4]);
+            if (fabs((double)mf_ltc_beckmann_fresnel((mf_real)ct, (mf_real)al) - e[5]) > wacc) wacc = fabs((double)mf_ltc_beckmann_fresnel((mf_real)ct, (mf_real)al) - e[5]);
+        }
+    snprintf(msg, sizeof msg, "raw Beckmann entries = lookups at the nodes (matrix, albedo, fresnel; worst %.2g)", wacc);
+    MFT_CHECK(wacc < MFT_TOL(1e-5, 2e-3), msg);
+    for (j = 21; j < 64; j += 21)
+        for (i = 0; i < 63; i += 21) {
+            double tt = i / 63.0, v = j / 63.0, ct = 1.0 - tt * tt, al = v * v, alb = 0.0, fr = 0.0;
+            int N = 400, p, q;
+            mf_ndf d = mf_beckmann((mf_real)al, (mf_real)al);
+            mf_vec3 wo = mf_vec3_make((mf_real)sqrt(1.0 - ct * ct), 0, (mf_real)ct);
+            const float *e = s + 6 * (j * 64 + i);
+            for (p = 0; p < N; ++p)
+                for (q = 0; q < N; ++q) {
+                    double cc = (p + 0.5) / N, ph = 2.0 * PI_D * (q + 0.5) / N, sn = sqrt(1.0 - cc * cc), f, h;
+                    mf_vec3 wi = mf_vec3_make((mf_real)(sn * cos(ph)), (mf_real)(sn * sin(ph)), (mf_real)cc);
+                    f = (double)mf_brdf(&d, wo, wi) * cc * (2.0 * PI_D / N) / N;
+                    h = 1.0 - (double)mf_dot(wo, mf_normalize(mf_add(wo, wi)));
+                    alb += f; fr += f * h * h * h * h * h;
+                }
+            if (fabs(alb - e[4]) > wf) wf = fabs(alb - e[4]);
+            if (fabs(fr - e[5]) > wf) wf = fabs(fr - e[5]);
+        }
+    snprintf(msg, sizeof msg, "Beckmann albedo and Fresnel columns vs quadrature of the BRDF (worst %.2g)", wf);
+    MFT_CHECK(wf < 5e-3, msg);
+    /* against Monte Carlo of the true Beckmann BRDF cos over quads */
+    {
+        const double cosv[] = { 0.95, 0.7, 0.4, 0.15 }, alphas[] = { 0.05, 0.13, 0.3, 0.6, 0.9 };
+        for (a = 0; a < 5; ++a)
+            for (c = 0; c < 4; ++c)
+                for (k = 0; k < 2; ++k) {
+                    mf_ndf d = mf_beckmann((mf_real)alphas[a], (mf_real)alphas[a]);
+                    double ct = cosv[c], st = sqrt(1 - ct * ct), se, mc, lt, rel, size = 0.3 + 1.2 * alphas[a];
+                    mf_vec3 wo = mf_vec3_make((mf_real)st, 0, (mf_real)ct), p[4], u, v;
+                    mf_vec3 cdir = k == 0 ? mf_vec3_make((mf_real)-st, 0, (mf_real)ct) : mf_normalize(mf_vec3_make((mf_real)(-0.3 * st), 0.5f, (mf_real)ct));
+                    mf_ltc l = mf_ltc_beckmann((mf_real)ct, (mf_real)alphas[a]);
+                    mf_frame(cdir, &u, &v);
+                    p[0] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)-size)));
+                    p[1] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)size)));
+                    p[2] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)size)));
+                    p[3] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)-size)));
+                    mc = brdf_polygon_mc(&d, wo, p, 4, 200000, r, &se);
+                    lt = mf_ltc_beckmann_albedo((mf_real)ct, (mf_real)alphas[a]) * mf_ltc_integrate(&l, p, 4, 1);
+                    if (mc < 0.02) continue;
+                    rel = fabs(lt - mc) / mc;
+                    if (mft_verbose) printf("    Beckmann alpha %.2f cos %.2f quad %d: ltc %.4f mc %.4f (se %.4f) rel %.3f\n", alphas[a], ct, k, lt, mc, se, rel);
+                    sum += rel; ++count;
+                    if (rel > worst) worst = rel;
+                }
+        printf("    Beckmann table vs Monte Carlo of the BRDF over %d quads: mean relative error %.3f, max %.3f\n", count, sum / count, worst);
+        snprintf(msg, sizeof msg, "Beckmann LTC table: mean relative error %.3f over %d quads", sum / count, count);
+        MFT_CHECK(count > 20 && sum / count < MFT_LTC_BECK_MEAN_TOL, msg);
+        snprintf(msg, sizeof msg, "Beckmann LTC table: max relative error %.3f", worst);
+        MFT_CHECK(worst < MFT_LTC_BECK_MAX_TOL, msg);
+    }
+    /* RGBA16F export: halves within half precision, the sampling convention
+     * reproducing mf_ltc_beckmann on squares */
+    {
+        static unsigned short t1[4 * 64 * 64], t2[4 * 64 * 64];
+        double we = 0.0, wq = 0.0;
+        MFT_CHECK(mf_ltc_table_export_rgba16f(s, n, na, t1, t2) == MF_SUCCESS, "export the Beckmann table as two RGBA16F textures");
+        for (i = 0; i < n * na; ++i)
+            for (k = 0; k < 6; ++k) {
+                double h = k < 4 ? half_value(t1[4 * i + k]) : half_value(t2[4 * i + k - 4]), want = s[6 * i + k];
+                double err = fabs(h - want) / (fabs(want) > 6.103515625e-05 ? fabs(want) : 6.103515625e-05);
+                if (err > we) we = err;
+            }
+        snprintf(msg, sizeof msg, "exported Beckmann halves within half precision of the table (worst %.2g relative)", we);
+        MFT_CHECK(we <= 1.0 / 2048, msg);
+        for (i = 0; i < 200; ++i) {
+            double ct = 0.02 + 0.98 * mft_u01(r), al = 0.02 + 0.98 * mft_u01(r), st = sqrt(1 - ct * ct);
+            double u = sqrt(1 - ct) * (n - 1.0) / n + 0.5 / n, v = sqrt(al) * (na - 1.0) / na + 0.5 / na;
+            double x = u * n - 0.5, y = v * na - 0.5, fx, fy, m[4];
+            int ix = (int)floor(x), iy = (int)floor(y), ix1, iy1;
+            mf_vec3 p[4];
+            mf_ltc la, lb;
+            fx = x - ix; fy = y - iy; ix1 = ix + 1 < n ? ix + 1 : n - 1; iy1 = iy + 1 < na ? iy + 1 : na - 1;
+            for (c = 0; c < 4; ++c)
+                m[c] = (1 - fy) * ((1 - fx) * half_value(t1[4 * (iy * n + ix) + c]) + fx * half_value(t1[4 * (iy * n + ix1) + c])) +
+                       fy * ((1 - fx) * half_value(t1[4 * (iy1 * n + ix) + c]) + fx * half_value(t1[4 * (iy1 * n + ix1) + c]));
+            la = mf_ltc_from_inverse((mf_real)m[0], (mf_real)m[1], MF_R(1.0), (mf_real)m[2], (mf_real)m[3]);
+            lb = mf_ltc_beckmann((mf_real)ct, (mf_real)al);
+            square_at(p, mf_normalize(mf_vec3_make((mf_real)(-st + 0.3 * mft_u01(r)), (mf_real)(0.3 * mft_u01(r)), (mf_real)ct)), 0.2 + al);
+            {
+                double ia = mf_ltc_integrate(&la, p, 4, 1), ib = mf_ltc_integrate(&lb, p, 4, 1);
+                if (ib > 1e-3 && fabs(ia - ib) / ib > wq) wq = fabs(ia - ib) / ib;
+            }
+        }
+        snprintf(msg, sizeof msg, "texture sampling convention reproduces mf_ltc_beckmann on squares (worst %.2g relative)", wq);
+        MFT_CHECK(wq < 5e-3, msg);
+    }
+}
+
 void test_ltc(void)
 {
     mft_rng r;
@@ -578,6 +954,9 @@ void test_ltc(void)
     test_export(&r);
     test_fitter();
     test_ggx_table(&r);
+    test_beckmann_table(&r);
+    test_broad_lights();
+    test_ggx_refined();
     /* normalization */
     for (i = 0; i < 6; ++i) {
         mf_ltc l = random_ltc(&r, i < 3 ? 0.4 : 0.9);

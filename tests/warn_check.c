@@ -226,6 +226,8 @@ int main(void)
         }
         s += mf_ltc_ggx(MF_R(0.5), MF_R(0.3)).M[0] + mf_ltc_ggx_albedo(MF_R(0.5), MF_R(0.3));
         s += mf_ltc_ggx_fresnel(MF_R(0.5), MF_R(0.3)) + (mf_real)mf_ltc_ggx_table(&nt, &na)[0] + (mf_real)(nt + na);
+        s += mf_ltc_beckmann(MF_R(0.5), MF_R(0.3)).M[0] + mf_ltc_beckmann_albedo(MF_R(0.5), MF_R(0.3));
+        s += mf_ltc_beckmann_fresnel(MF_R(0.5), MF_R(0.3)) + (mf_real)mf_ltc_beckmann_table(&nt, &na)[0] + (mf_real)(nt + na);
         {
             static unsigned short t1[4 * 64 * 64], t2[4 * 64 * 64];
             if (mf_ltc_table_export_rgba16f(mf_ltc_ggx_table(&nt, &na), nt, na, t1, t2) == MF_SUCCESS) s += (mf_real)t1[0];
