@@ -2648,6 +2648,13 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 #else
 #define MF__LTC_RARE MF_INLINE
 #endif
+#if defined(__CUDACC__)
+#define MF__LTC_NOINLINE static __noinline__ MF_HD
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__LTC_NOINLINE static __attribute__((noinline, unused))
+#else
+#define MF__LTC_NOINLINE MF_INLINE
+#endif
 
 /* theta / sin theta for d = cos theta in [0, 1]: a (2, 2) rational fit,
  * relative error 5.6e-7 (minimax in the relative error, fitted in long
@@ -2691,24 +2698,25 @@ MF_INLINE mf_vec3 mf__edge_vector_exact(mf_vec3 a, mf_vec3 b)
     return mf_scale(c, MF_ATAN2(s, d) / s);
 }
 /* the z component beyond pi/2 (out of line: rare in small lights) */
-MF__LTC_RARE mf_real mf__edge_z_obtuse(mf_vec3 a, mf_vec3 b, mf_real d)
+MF__LTC_RARE mf_real mf__edge_z_obtuse(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz, mf_real d)
 {
-    mf_real cx = a.y * (a.z + b.z) - a.z * (a.y + b.y), cy = a.z * (a.x + b.x) - a.x * (a.z + b.z);
-    mf_real cz = a.x * (a.y + b.y) - a.y * (a.x + b.x), s2 = cx * cx + cy * cy + cz * cz;
+    mf_real cx = ay * (az + bz) - az * (ay + by), cy = az * (ax + bx) - ax * (az + bz);
+    mf_real cz = ax * (ay + by) - ay * (ax + bx), s2 = cx * cx + cy * cy + cz * cz;
     if (!(s2 > MF_R(1e-30))) return MF_R(0.0);
     return cz * (MF_PI / MF_SQRT(s2) - mf__theta_sin(-d));
 }
-/* its z component only */
-MF__LTC_HOT mf_real mf__edge_z(mf_vec3 a, mf_vec3 b)
+/* its z component only (scalar arguments, then vectors) */
+MF__LTC_HOT mf_real mf__edge_zs(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz)
 {
 #ifdef MF_LTC_EXACT_EDGE
-    return mf__edge_vector_exact(a, b).z;
+    return mf__edge_vector_exact(mf_vec3_make(ax, ay, az), mf_vec3_make(bx, by, bz)).z;
 #else
-    mf_real d = a.x * b.x + a.y * b.y + a.z * b.z;
-    if (d >= MF_R(0.0)) return (a.x * (b.y - a.y) - a.y * (b.x - a.x)) * mf__theta_sin(d);
-    return mf__edge_z_obtuse(a, b, d);
+    mf_real d = ax * bx + ay * by + az * bz;
+    if (d >= MF_R(0.0)) return (ax * (by - ay) - ay * (bx - ax)) * mf__theta_sin(d);
+    return mf__edge_z_obtuse(ax, ay, az, bx, by, bz, d);
 #endif
 }
+MF__LTC_HOT mf_real mf__edge_z(mf_vec3 a, mf_vec3 b) { return mf__edge_zs(a.x, a.y, a.z, b.x, b.y, b.z); }
 MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
 {
 #ifdef MF_LTC_EXACT_EDGE
@@ -2769,27 +2777,91 @@ MF_INLINE mf_real mf__polygon_clipped(const mf_real *A, const mf_vec3 *p, int n)
     return sum;
 }
 
-/* The same, by a faster path for polygons above the horizon: quads
- * straight-line, other polygons in blocks of 16 vertices (transform and
+/* A quad, the common light, in scalar temporaries (no vertex structs in
+ * memory: gcc pairs x with y across them, and the shuffles cost more than
+ * the pairing saves). Above the horizon: normalized and summed straight. A
+ * planar quad crosses the horizon at most twice, so its vertices above it
+ * form one run s..s+k-1 (start and length per pattern of signs: the nibbles
+ * of MF__QUAD_RUNS); the run, the exit point and the entry point make the
+ * clipped polygon. The two patterns with two runs go to the general loop. */
+#define MF__QUAD_RUNS 0x09A6B07385024100ULL
+MF__LTC_RARE mf_real mf__quad_two_runs(mf_real x0, mf_real y0, mf_real z0, mf_real x1, mf_real y1, mf_real z1,
+                                       mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3)
+{
+    mf_vec3 v[4];
+    v[0] = mf_vec3_make(x0, y0, z0); v[1] = mf_vec3_make(x1, y1, z1);
+    v[2] = mf_vec3_make(x2, y2, z2); v[3] = mf_vec3_make(x3, y3, z3);
+    return mf__polygon_clipped((const mf_real *)0, v, 4);
+}
+/* the unit vector of (x, y, z) in place (0 stays 0) */
+#define MF__LTC_UNIT(x, y, z) do { \
+        mf_real l2_ = (x) * (x) + (y) * (y) + (z) * (z), r_ = l2_ > MF_R(0.0) ? MF_R(1.0) / MF_SQRT(l2_) : MF_R(0.0); \
+        (x) *= r_; (y) *= r_; (z) *= r_; \
+    } while (0)
+/* the unit horizon point of the segment from u (above) to d (below, or on
+ * it): u.z d - d.z u (both weights >= 0), z = 0 */
+#define MF__LTC_HORIZON(hx, hy, ux, uy, uz, dx, dy, dz) do { \
+        mf_real hz_ = MF_R(0.0); \
+        hx = (uz) * (dx) - (dz) * (ux); hy = (uz) * (dy) - (dz) * (uy); \
+        MF__LTC_UNIT(hx, hy, hz_); \
+    } while (0)
+MF__LTC_NOINLINE mf_real mf__quad_clipped(mf_real x0, mf_real y0, mf_real z0, mf_real x1, mf_real y1, mf_real z1,
+                                          mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3, int cfg)
+{
+    int code = (int)((MF__QUAD_RUNS >> (4 * cfg)) & 15u), s = code & 3, k = (code >> 2) + 1;
+    mf_real t, sum, ax, ay, az, dx, dy, dz, ex, ey, nx, ny;
+    if (cfg == 0) return MF_R(0.0);
+    if (cfg == 5 || cfg == 10) return mf__quad_two_runs(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3);
+    for (; s > 0; --s) {   /* rotate: the run starts at vertex 0 */
+        t = x0; x0 = x1; x1 = x2; x2 = x3; x3 = t;
+        t = y0; y0 = y1; y1 = y2; y2 = y3; y3 = t;
+        t = z0; z0 = z1; z1 = z2; z2 = z3; z3 = t;
+    }
+    MF__LTC_UNIT(x0, y0, z0);
+    ax = x0; ay = y0; az = z0; dx = x1; dy = y1; dz = z1;
+    sum = MF_R(0.0);
+    if (k >= 2) {
+        MF__LTC_UNIT(x1, y1, z1);
+        sum += mf__edge_zs(x0, y0, z0, x1, y1, z1);
+        ax = x1; ay = y1; az = z1; dx = x2; dy = y2; dz = z2;
+        if (k == 3) {
+            MF__LTC_UNIT(x2, y2, z2);
+            sum += mf__edge_zs(x1, y1, z1, x2, y2, z2);
+            ax = x2; ay = y2; az = z2; dx = x3; dy = y3; dz = z3;
+        }
+    }
+    MF__LTC_HORIZON(ex, ey, ax, ay, az, dx, dy, dz);   /* exit */
+    MF__LTC_HORIZON(nx, ny, x0, y0, z0, x3, y3, z3);   /* entry */
+    return sum + mf__edge_zs(ax, ay, az, ex, ey, MF_R(0.0)) + mf__edge_zs(ex, ey, MF_R(0.0), nx, ny, MF_R(0.0)) +
+           mf__edge_zs(nx, ny, MF_R(0.0), x0, y0, z0);
+}
+MF_INLINE mf_real mf__quad_sum(const mf_real *A, const mf_vec3 *p)
+{
+    mf_real x0 = p[0].x, y0 = p[0].y, z0 = p[0].z, x1 = p[1].x, y1 = p[1].y, z1 = p[1].z;
+    mf_real x2 = p[2].x, y2 = p[2].y, z2 = p[2].z, x3 = p[3].x, y3 = p[3].y, z3 = p[3].z, t0, t1, t2, t3;
+    int cfg;
+    if (A) {
+        t0 = A[0] * x0 + A[1] * y0 + A[2] * z0; t1 = A[3] * x0 + A[4] * y0 + A[5] * z0; z0 = A[6] * x0 + A[7] * y0 + A[8] * z0; x0 = t0; y0 = t1;
+        t0 = A[0] * x1 + A[1] * y1 + A[2] * z1; t1 = A[3] * x1 + A[4] * y1 + A[5] * z1; z1 = A[6] * x1 + A[7] * y1 + A[8] * z1; x1 = t0; y1 = t1;
+        t0 = A[0] * x2 + A[1] * y2 + A[2] * z2; t1 = A[3] * x2 + A[4] * y2 + A[5] * z2; z2 = A[6] * x2 + A[7] * y2 + A[8] * z2; x2 = t0; y2 = t1;
+        t0 = A[0] * x3 + A[1] * y3 + A[2] * z3; t1 = A[3] * x3 + A[4] * y3 + A[5] * z3; z3 = A[6] * x3 + A[7] * y3 + A[8] * z3; x3 = t0; y3 = t1;
+    }
+    cfg = (z0 > MF_R(0.0)) | (z1 > MF_R(0.0)) << 1 | (z2 > MF_R(0.0)) << 2 | (z3 > MF_R(0.0)) << 3;
+    if (cfg != 15) return mf__quad_clipped(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3, cfg);
+    MF__LTC_UNIT(x0, y0, z0); MF__LTC_UNIT(x1, y1, z1); MF__LTC_UNIT(x2, y2, z2); MF__LTC_UNIT(x3, y3, z3);
+    t0 = mf__edge_zs(x0, y0, z0, x1, y1, z1); t1 = mf__edge_zs(x1, y1, z1, x2, y2, z2);
+    t2 = mf__edge_zs(x2, y2, z2, x3, y3, z3); t3 = mf__edge_zs(x3, y3, z3, x0, y0, z0);
+    return (t0 + t1) + (t2 + t3);
+}
+
+/* Other polygons above the horizon in blocks of 16 vertices (transform and
  * normalize into a buffer, then the edges); the first vertex below the
  * horizon hands over to the clipping loop. */
-MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
+MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
 {
     mf_vec3 u[16], u0 = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), prev = u0;
     mf_real s0 = MF_R(0.0), s1 = MF_R(0.0);
     int base, k, m;
-    if (!p || n < 3) return MF_R(0.0);
-    if (n == 4) {
-        mf_vec3 b0 = MF__LTC_T(A, p[0]), b1 = MF__LTC_T(A, p[1]), b2 = MF__LTC_T(A, p[2]), b3 = MF__LTC_T(A, p[3]);
-        if (!(b0.z > MF_R(0.0) && b1.z > MF_R(0.0) && b2.z > MF_R(0.0) && b3.z > MF_R(0.0))) {
-            u[0] = b0; u[1] = b1; u[2] = b2; u[3] = b3;   /* clip the transformed quad */
-            return mf__polygon_clipped((const mf_real *)0, u, 4);
-        }
-        b0 = mf__unit_or_zero(b0); b1 = mf__unit_or_zero(b1); b2 = mf__unit_or_zero(b2); b3 = mf__unit_or_zero(b3);
-        s0 = mf__edge_z(b0, b1) + mf__edge_z(b1, b2);
-        s1 = mf__edge_z(b2, b3) + mf__edge_z(b3, b0);
-        return s0 + s1;
-    }
     for (base = 0; base < n; base += 16) {
         m = n - base < 16 ? n - base : 16;
         for (k = 0; k < m; ++k) {
@@ -2806,6 +2878,14 @@ MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
     return s0 + s1;
 clip:
     return mf__polygon_clipped(A, p, n);
+}
+
+/* The signed sum of the polygon transformed by A, clipped at the horizon. */
+MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
+{
+    if (!p || n < 3) return MF_R(0.0);
+    if (n == 4) return mf__quad_sum(A, p);
+    return mf__ngon_sum(A, p, n);
 }
 
 /* the cosine form factor: the sum over 2 pi */
