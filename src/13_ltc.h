@@ -145,12 +145,15 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 /* theta / sin theta for d = cos theta in [0, 1]: a (2, 2) rational fit,
  * relative error 5.6e-7 (minimax in the relative error, fitted in long
  * double; a (3, 3) fit reaches 1.1e-9 at two more multiply-adds). */
-MF__LTC_HOT mf_real mf__theta_sin(mf_real d)
+MF__LTC_HOT mf_real mf__ts_p(mf_real d)
 {
-    mf_real p = MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
-    mf_real q = MF_R(1.0) + d * (MF_R(1.2132377142117774) + d * MF_R(0.28940008969878159));
-    return p / q;
+    return MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
 }
+MF__LTC_HOT mf_real mf__ts_q(mf_real d)
+{
+    return MF_R(1.0) + d * (MF_R(1.2132377142117774) + d * MF_R(0.28940008969878159));
+}
+MF__LTC_HOT mf_real mf__theta_sin(mf_real d) { return mf__ts_p(d) / mf__ts_q(d); }
 
 /* Integral of the cosine lobe's vector irradiance over the great arc from a to
  * b (unit vectors): (theta / sin theta) (a x b). a x b is formed as
@@ -183,13 +186,16 @@ MF_INLINE mf_vec3 mf__edge_vector_exact(mf_vec3 a, mf_vec3 b)
     if (!(s > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     return mf_scale(c, MF_ATAN2(s, d) / s);
 }
-/* the z component beyond pi/2 (out of line: rare in small lights) */
-MF__LTC_RARE mf_real mf__edge_z_obtuse(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz, mf_real d)
+/* the z component beyond pi/2: c = a x (a + b), pi / |c| - f(-d) over one
+ * division */
+MF__LTC_HOT mf_real mf__edge_z_obtuse(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz, mf_real d)
 {
     mf_real cx = ay * (az + bz) - az * (ay + by), cy = az * (ax + bx) - ax * (az + bz);
-    mf_real cz = ax * (ay + by) - ay * (ax + bx), s2 = cx * cx + cy * cy + cz * cz;
+    mf_real cz = ax * (ay + by) - ay * (ax + bx), s2 = cx * cx + cy * cy + cz * cz, sn, p, q;
     if (!(s2 > MF_R(1e-30))) return MF_R(0.0);
-    return cz * (MF_PI / MF_SQRT(s2) - mf__theta_sin(-d));
+    sn = MF_SQRT(s2);
+    p = mf__ts_p(-d); q = mf__ts_q(-d);
+    return cz * (MF_PI * q - p * sn) / (sn * q);
 }
 /* its z component only (scalar arguments, then vectors) */
 MF__LTC_HOT mf_real mf__edge_zs(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz)
@@ -203,6 +209,59 @@ MF__LTC_HOT mf_real mf__edge_zs(mf_real ax, mf_real ay, mf_real az, mf_real bx, 
 #endif
 }
 MF__LTC_HOT mf_real mf__edge_z(mf_vec3 a, mf_vec3 b) { return mf__edge_zs(a.x, a.y, a.z, b.x, b.y, b.z); }
+/* an edge along the horizon (unit a, b with z = 0), often obtuse in clipped
+ * lights: a x b = (0, 0, c) with sin theta = |c|, so beyond pi/2 the edge is
+ * sign(c) pi - c f(-d), no square root */
+MF__LTC_HOT mf_real mf__edge_z_horizon(mf_real ax, mf_real ay, mf_real bx, mf_real by)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    return mf__edge_zs(ax, ay, MF_R(0.0), bx, by, MF_R(0.0));
+#else
+    mf_real d = ax * bx + ay * by, c;
+    if (d >= MF_R(0.0)) return (ax * (by - ay) - ay * (bx - ax)) * mf__theta_sin(d);
+    c = ax * (ay + by) - ay * (ax + bx);
+    if (c == MF_R(0.0)) return MF_R(0.0);   /* antipodal */
+    return (c > MF_R(0.0) ? MF_PI : -MF_PI) - c * mf__theta_sin(-d);
+#endif
+}
+/* Sums of edges as one fraction n / q: an acute edge adds c p(d) / q(d),
+ * the rational fit's own numerator and denominator, so that a quad pays one
+ * division for its edges (q in [1, 2.5] per acute edge: no overflow for the
+ * five edges of a clipped quad); an obtuse edge adds its value. */
+MF__LTC_HOT void mf__edge_add(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz, mf_real *n, mf_real *q)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    *n += mf__edge_zs(ax, ay, az, bx, by, bz) * *q;
+#else
+    mf_real d = ax * bx + ay * by + az * bz, c, qd;
+    if (d >= MF_R(0.0)) {
+        c = ax * (by - ay) - ay * (bx - ax);
+        qd = mf__ts_q(d);
+        *n = *n * qd + c * mf__ts_p(d) * *q;
+        *q *= qd;
+    } else *n += mf__edge_z_obtuse(ax, ay, az, bx, by, bz, d) * *q;
+#endif
+}
+/* the same for an edge along the horizon (mf__edge_z_horizon) */
+MF__LTC_HOT void mf__edge_add_horizon(mf_real ax, mf_real ay, mf_real bx, mf_real by, mf_real *n, mf_real *q)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    *n += mf__edge_z_horizon(ax, ay, bx, by) * *q;
+#else
+    mf_real d = ax * bx + ay * by, c, qd;
+    if (d >= MF_R(0.0)) {
+        c = ax * (by - ay) - ay * (bx - ax);
+        qd = mf__ts_q(d);
+        *n = *n * qd + c * mf__ts_p(d) * *q;
+    } else {
+        c = ax * (ay + by) - ay * (ax + bx);
+        if (c == MF_R(0.0)) return;   /* antipodal */
+        qd = mf__ts_q(-d);
+        *n = *n * qd + ((c > MF_R(0.0) ? MF_PI : -MF_PI) * qd - c * mf__ts_p(-d)) * *q;
+    }
+    *q *= qd;
+#endif
+}
 MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
 {
 #ifdef MF_LTC_EXACT_EDGE
@@ -263,6 +322,18 @@ MF_INLINE mf_real mf__polygon_clipped(const mf_real *A, const mf_vec3 *p, int n)
     return sum;
 }
 
+/* x, y, z transformed by the row-major A in place; the sparse form
+ * [a 0 b; 0 c 0; d 0 e] of the LTC tables (and of mf_ltc_from_inverse) in 5
+ * products instead of 9 */
+#define MF__LTC_XF(A, x, y, z) do { \
+        mf_real tx_ = (A)[0] * (x) + (A)[1] * (y) + (A)[2] * (z), tz_ = (A)[6] * (x) + (A)[7] * (y) + (A)[8] * (z); \
+        (y) = (A)[3] * (x) + (A)[4] * (y) + (A)[5] * (z); (x) = tx_; (z) = tz_; \
+    } while (0)
+#define MF__LTC_SPARSE(A) ((A)[1] == MF_R(0.0) && (A)[3] == MF_R(0.0) && (A)[5] == MF_R(0.0) && (A)[7] == MF_R(0.0))
+#define MF__LTC_XF_SPARSE(A, x, y, z) do { \
+        mf_real tx_ = (A)[0] * (x) + (A)[2] * (z); \
+        (z) = (A)[6] * (x) + (A)[8] * (z); (y) *= (A)[4]; (x) = tx_; \
+    } while (0)
 /* A quad, the common light, in scalar temporaries (no vertex structs in
  * memory: gcc pairs x with y across them, and the shuffles cost more than
  * the pairing saves). Above the horizon: normalized and summed straight. A
@@ -305,63 +376,71 @@ MF__LTC_NOINLINE mf_real mf__quad_clipped(mf_real x0, mf_real y0, mf_real z0, mf
     }
     MF__LTC_UNIT(x0, y0, z0);
     ax = x0; ay = y0; az = z0; dx = x1; dy = y1; dz = z1;
-    sum = MF_R(0.0);
+    sum = MF_R(0.0); t = MF_R(1.0);
     if (k >= 2) {
         MF__LTC_UNIT(x1, y1, z1);
-        sum += mf__edge_zs(x0, y0, z0, x1, y1, z1);
+        mf__edge_add(x0, y0, z0, x1, y1, z1, &sum, &t);
         ax = x1; ay = y1; az = z1; dx = x2; dy = y2; dz = z2;
         if (k == 3) {
             MF__LTC_UNIT(x2, y2, z2);
-            sum += mf__edge_zs(x1, y1, z1, x2, y2, z2);
+            mf__edge_add(x1, y1, z1, x2, y2, z2, &sum, &t);
             ax = x2; ay = y2; az = z2; dx = x3; dy = y3; dz = z3;
         }
     }
     MF__LTC_HORIZON(ex, ey, ax, ay, az, dx, dy, dz);   /* exit */
     MF__LTC_HORIZON(nx, ny, x0, y0, z0, x3, y3, z3);   /* entry */
-    return sum + mf__edge_zs(ax, ay, az, ex, ey, MF_R(0.0)) + mf__edge_zs(ex, ey, MF_R(0.0), nx, ny, MF_R(0.0)) +
-           mf__edge_zs(nx, ny, MF_R(0.0), x0, y0, z0);
+    mf__edge_add(ax, ay, az, ex, ey, MF_R(0.0), &sum, &t);
+    mf__edge_add_horizon(ex, ey, nx, ny, &sum, &t);
+    mf__edge_add(nx, ny, MF_R(0.0), x0, y0, z0, &sum, &t);
+    return sum / t;
 }
 MF_INLINE mf_real mf__quad_sum(const mf_real *A, const mf_vec3 *p)
 {
     mf_real x0 = p[0].x, y0 = p[0].y, z0 = p[0].z, x1 = p[1].x, y1 = p[1].y, z1 = p[1].z;
-    mf_real x2 = p[2].x, y2 = p[2].y, z2 = p[2].z, x3 = p[3].x, y3 = p[3].y, z3 = p[3].z, t0, t1, t2, t3;
+    mf_real x2 = p[2].x, y2 = p[2].y, z2 = p[2].z, x3 = p[3].x, y3 = p[3].y, z3 = p[3].z, n0, q0, n1, q1;
     int cfg;
-    if (A) {
-        t0 = A[0] * x0 + A[1] * y0 + A[2] * z0; t1 = A[3] * x0 + A[4] * y0 + A[5] * z0; z0 = A[6] * x0 + A[7] * y0 + A[8] * z0; x0 = t0; y0 = t1;
-        t0 = A[0] * x1 + A[1] * y1 + A[2] * z1; t1 = A[3] * x1 + A[4] * y1 + A[5] * z1; z1 = A[6] * x1 + A[7] * y1 + A[8] * z1; x1 = t0; y1 = t1;
-        t0 = A[0] * x2 + A[1] * y2 + A[2] * z2; t1 = A[3] * x2 + A[4] * y2 + A[5] * z2; z2 = A[6] * x2 + A[7] * y2 + A[8] * z2; x2 = t0; y2 = t1;
-        t0 = A[0] * x3 + A[1] * y3 + A[2] * z3; t1 = A[3] * x3 + A[4] * y3 + A[5] * z3; z3 = A[6] * x3 + A[7] * y3 + A[8] * z3; x3 = t0; y3 = t1;
+    if (!A) {
+    } else if (MF__LTC_SPARSE(A)) {
+        MF__LTC_XF_SPARSE(A, x0, y0, z0); MF__LTC_XF_SPARSE(A, x1, y1, z1);
+        MF__LTC_XF_SPARSE(A, x2, y2, z2); MF__LTC_XF_SPARSE(A, x3, y3, z3);
+    } else {
+        MF__LTC_XF(A, x0, y0, z0); MF__LTC_XF(A, x1, y1, z1); MF__LTC_XF(A, x2, y2, z2); MF__LTC_XF(A, x3, y3, z3);
     }
     cfg = (z0 > MF_R(0.0)) | (z1 > MF_R(0.0)) << 1 | (z2 > MF_R(0.0)) << 2 | (z3 > MF_R(0.0)) << 3;
     if (cfg != 15) return mf__quad_clipped(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3, cfg);
     MF__LTC_UNIT(x0, y0, z0); MF__LTC_UNIT(x1, y1, z1); MF__LTC_UNIT(x2, y2, z2); MF__LTC_UNIT(x3, y3, z3);
-    t0 = mf__edge_zs(x0, y0, z0, x1, y1, z1); t1 = mf__edge_zs(x1, y1, z1, x2, y2, z2);
-    t2 = mf__edge_zs(x2, y2, z2, x3, y3, z3); t3 = mf__edge_zs(x3, y3, z3, x0, y0, z0);
-    return (t0 + t1) + (t2 + t3);
+    n0 = n1 = MF_R(0.0); q0 = q1 = MF_R(1.0);
+    mf__edge_add(x0, y0, z0, x1, y1, z1, &n0, &q0); mf__edge_add(x1, y1, z1, x2, y2, z2, &n0, &q0);
+    mf__edge_add(x2, y2, z2, x3, y3, z3, &n1, &q1); mf__edge_add(x3, y3, z3, x0, y0, z0, &n1, &q1);
+    return (n0 * q1 + n1 * q0) / (q0 * q1);
 }
 
 /* Other polygons above the horizon in blocks of 16 vertices (transform and
- * normalize into a buffer, then the edges); the first vertex below the
- * horizon hands over to the clipping loop. */
+ * normalize into three scalar buffers, then the edges as one fraction, q
+ * below 2.5^16); the first vertex below the horizon hands over to the
+ * clipping loop. */
 MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
 {
-    mf_vec3 u[16], u0 = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), prev = u0;
-    mf_real s0 = MF_R(0.0), s1 = MF_R(0.0);
-    int base, k, m;
+    mf_real ux[16], uy[16], uz[16], x, y, z, px = MF_R(0.0), py = MF_R(0.0), pz = MF_R(0.0);
+    mf_real fx = MF_R(0.0), fy = MF_R(0.0), fz = MF_R(0.0), sum = MF_R(0.0);
+    int base, k, m, sparse = A && MF__LTC_SPARSE(A);
     for (base = 0; base < n; base += 16) {
         m = n - base < 16 ? n - base : 16;
         for (k = 0; k < m; ++k) {
-            mf_vec3 w = MF__LTC_T(A, p[base + k]);
-            if (!(w.z > MF_R(0.0))) goto clip;
-            u[k] = mf__unit_or_zero(w);
+            x = p[base + k].x; y = p[base + k].y; z = p[base + k].z;
+            if (!A) {
+            } else if (sparse) MF__LTC_XF_SPARSE(A, x, y, z);
+            else MF__LTC_XF(A, x, y, z);
+            if (!(z > MF_R(0.0))) goto clip;
+            MF__LTC_UNIT(x, y, z);
+            ux[k] = x; uy[k] = y; uz[k] = z;
         }
-        if (base == 0) u0 = u[0];
-        else s0 += mf__edge_z(prev, u[0]);
-        for (k = 0; k + 1 < m; ++k) s1 += mf__edge_z(u[k], u[k + 1]);
-        prev = u[m - 1];
+        if (base == 0) { fx = ux[0]; fy = uy[0]; fz = uz[0]; }
+        else sum += mf__edge_zs(px, py, pz, ux[0], uy[0], uz[0]);
+        for (k = 0; k + 1 < m; ++k) sum += mf__edge_zs(ux[k], uy[k], uz[k], ux[k + 1], uy[k + 1], uz[k + 1]);
+        px = ux[m - 1]; py = uy[m - 1]; pz = uz[m - 1];
     }
-    s0 += mf__edge_z(prev, u0);
-    return s0 + s1;
+    return sum + mf__edge_zs(px, py, pz, fx, fy, fz);
 clip:
     return mf__polygon_clipped(A, p, n);
 }
