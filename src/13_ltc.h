@@ -366,7 +366,7 @@ MF__LTC_NOINLINE mf_real mf__quad_clipped(mf_real x0, mf_real y0, mf_real z0, mf
                                           mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3, int cfg)
 {
     int code = (int)((MF__QUAD_RUNS >> (4 * cfg)) & 15u), s = code & 3, k = (code >> 2) + 1;
-    mf_real t, sum, ax, ay, az, dx, dy, dz, ex, ey, nx, ny;
+    mf_real t, sum, ax, ay, az, ex, ey, nx, ny;
     if (cfg == 0) return MF_R(0.0);
     if (cfg == 5 || cfg == 10) return mf__quad_two_runs(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3);
     for (; s > 0; --s) {   /* rotate: the run starts at vertex 0 */
@@ -374,21 +374,25 @@ MF__LTC_NOINLINE mf_real mf__quad_clipped(mf_real x0, mf_real y0, mf_real z0, mf
         t = y0; y0 = y1; y1 = y2; y2 = y3; y3 = t;
         t = z0; z0 = z1; z1 = z2; z2 = z3; z3 = t;
     }
+    /* the horizon points from the vertices as they are (u.z d - d.z u scales
+     * with u): off the dependency chain of the normalizations */
+    if (k == 1) MF__LTC_HORIZON(ex, ey, x0, y0, z0, x1, y1, z1);
+    else if (k == 2) MF__LTC_HORIZON(ex, ey, x1, y1, z1, x2, y2, z2);
+    else MF__LTC_HORIZON(ex, ey, x2, y2, z2, x3, y3, z3);
+    MF__LTC_HORIZON(nx, ny, x0, y0, z0, x3, y3, z3);
     MF__LTC_UNIT(x0, y0, z0);
-    ax = x0; ay = y0; az = z0; dx = x1; dy = y1; dz = z1;
+    ax = x0; ay = y0; az = z0;
     sum = MF_R(0.0); t = MF_R(1.0);
     if (k >= 2) {
         MF__LTC_UNIT(x1, y1, z1);
         mf__edge_add(x0, y0, z0, x1, y1, z1, &sum, &t);
-        ax = x1; ay = y1; az = z1; dx = x2; dy = y2; dz = z2;
+        ax = x1; ay = y1; az = z1;
         if (k == 3) {
             MF__LTC_UNIT(x2, y2, z2);
             mf__edge_add(x1, y1, z1, x2, y2, z2, &sum, &t);
-            ax = x2; ay = y2; az = z2; dx = x3; dy = y3; dz = z3;
+            ax = x2; ay = y2; az = z2;
         }
     }
-    MF__LTC_HORIZON(ex, ey, ax, ay, az, dx, dy, dz);   /* exit */
-    MF__LTC_HORIZON(nx, ny, x0, y0, z0, x3, y3, z3);   /* entry */
     mf__edge_add(ax, ay, az, ex, ey, MF_R(0.0), &sum, &t);
     mf__edge_add_horizon(ex, ey, nx, ny, &sum, &t);
     mf__edge_add(nx, ny, MF_R(0.0), x0, y0, z0, &sum, &t);
@@ -886,7 +890,22 @@ static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_thet
         v[k] = w00 * (mf_real)e00[k] + w10 * (mf_real)e10[k] + w01 * (mf_real)e01[k] + w11 * (mf_real)e11[k];
     if (albedo) *albedo = w00 * (mf_real)e00[4] + w10 * (mf_real)e10[4] + w01 * (mf_real)e01[4] + w11 * (mf_real)e11[4];
     if (fresnel) *fresnel = w00 * (mf_real)e00[5] + w10 * (mf_real)e10[5] + w01 * (mf_real)e01[5] + w11 * (mf_real)e11[5];
-    return mf_ltc_from_inverse(v[0], v[1], MF_R(1.0), v[2], v[3]);
+    {   /* mf_ltc_from_inverse with c = 1 */
+        mf_ltc l;
+        mf_real k = v[0] * v[3] - v[1] * v[2], rk, h = MF_LTC_MIN_DET_REL * MF_LTC_MIN_DET_REL;
+        if (!(k * k > h * (v[0] * v[0] + v[1] * v[1]) * (v[2] * v[2] + v[3] * v[3])) || !(MF_FABS(k) * MF_BIG > MF_R(1.0)) ||
+            !(MF_FABS(v[0]) + MF_FABS(v[1]) + MF_FABS(v[2]) + MF_FABS(v[3]) < MF_BIG))
+            return mf_ltc_from_inverse(MF_R(1.0), MF_R(0.0), MF_R(1.0), MF_R(0.0), MF_R(1.0));
+        rk = MF_R(1.0) / k;
+        l.Minv[0] = v[0]; l.Minv[1] = MF_R(0.0); l.Minv[2] = v[1];
+        l.Minv[3] = MF_R(0.0); l.Minv[4] = MF_R(1.0); l.Minv[5] = MF_R(0.0);
+        l.Minv[6] = v[2]; l.Minv[7] = MF_R(0.0); l.Minv[8] = v[3];
+        l.M[0] = v[3] * rk; l.M[1] = MF_R(0.0); l.M[2] = -v[1] * rk;
+        l.M[3] = MF_R(0.0); l.M[4] = MF_R(1.0); l.M[5] = MF_R(0.0);
+        l.M[6] = -v[2] * rk; l.M[7] = MF_R(0.0); l.M[8] = v[0] * rk;
+        l.det_inv = MF_FABS(k);
+        return l;
+    }
 }
 
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
