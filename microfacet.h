@@ -6297,18 +6297,18 @@ static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_thet
     if (fresnel) *fresnel = w00 * (mf_real)e00[5] + w10 * (mf_real)e10[5] + w01 * (mf_real)e01[5] + w11 * (mf_real)e11[5];
     {   /* mf_ltc_from_inverse with c = 1 */
         mf_ltc l;
-        mf_real k = v[0] * v[3] - v[1] * v[2], rk, h = MF_LTC_MIN_DET_REL * MF_LTC_MIN_DET_REL;
-        if (!(k * k > h * (v[0] * v[0] + v[1] * v[1]) * (v[2] * v[2] + v[3] * v[3])) || !(MF_FABS(k) * MF_BIG > MF_R(1.0)) ||
+        mf_real q = v[0] * v[3] - v[1] * v[2], rq, h = MF_LTC_MIN_DET_REL * MF_LTC_MIN_DET_REL;
+        if (!(q * q > h * (v[0] * v[0] + v[1] * v[1]) * (v[2] * v[2] + v[3] * v[3])) || !(MF_FABS(q) * MF_BIG > MF_R(1.0)) ||
             !(MF_FABS(v[0]) + MF_FABS(v[1]) + MF_FABS(v[2]) + MF_FABS(v[3]) < MF_BIG))
             return mf_ltc_from_inverse(MF_R(1.0), MF_R(0.0), MF_R(1.0), MF_R(0.0), MF_R(1.0));
-        rk = MF_R(1.0) / k;
+        rq = MF_R(1.0) / q;
         l.Minv[0] = v[0]; l.Minv[1] = MF_R(0.0); l.Minv[2] = v[1];
         l.Minv[3] = MF_R(0.0); l.Minv[4] = MF_R(1.0); l.Minv[5] = MF_R(0.0);
         l.Minv[6] = v[2]; l.Minv[7] = MF_R(0.0); l.Minv[8] = v[3];
-        l.M[0] = v[3] * rk; l.M[1] = MF_R(0.0); l.M[2] = -v[1] * rk;
+        l.M[0] = v[3] * rq; l.M[1] = MF_R(0.0); l.M[2] = -v[1] * rq;
         l.M[3] = MF_R(0.0); l.M[4] = MF_R(1.0); l.M[5] = MF_R(0.0);
-        l.M[6] = -v[2] * rk; l.M[7] = MF_R(0.0); l.M[8] = v[0] * rk;
-        l.det_inv = MF_FABS(k);
+        l.M[6] = -v[2] * rq; l.M[7] = MF_R(0.0); l.M[8] = v[0] * rq;
+        l.det_inv = MF_FABS(q);
         return l;
     }
 }
