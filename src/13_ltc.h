@@ -339,9 +339,8 @@ MF_INLINE mf_real mf__polygon_clipped(const mf_real *A, const mf_vec3 *p, int n)
  * the pairing saves). Above the horizon: normalized and summed straight. A
  * planar quad crosses the horizon at most twice, so its vertices above it
  * form one run s..s+k-1 (start and length per pattern of signs: the nibbles
- * of MF__QUAD_RUNS); the run, the exit point and the entry point make the
+ * of two constants, patterns 0-7 and 8-15); the run, the exit point and the entry point make the
  * clipped polygon. The two patterns with two runs go to the general loop. */
-#define MF__QUAD_RUNS 0x09A6B07385024100ULL
 MF__LTC_RARE mf_real mf__quad_two_runs(mf_real x0, mf_real y0, mf_real z0, mf_real x1, mf_real y1, mf_real z1,
                                        mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3)
 {
@@ -365,7 +364,7 @@ MF__LTC_RARE mf_real mf__quad_two_runs(mf_real x0, mf_real y0, mf_real z0, mf_re
 MF__LTC_NOINLINE mf_real mf__quad_clipped(mf_real x0, mf_real y0, mf_real z0, mf_real x1, mf_real y1, mf_real z1,
                                           mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3, int cfg)
 {
-    int code = (int)((MF__QUAD_RUNS >> (4 * cfg)) & 15u), s = code & 3, k = (code >> 2) + 1;
+    int code = (int)((cfg < 8 ? 0x85024100u >> (4 * cfg) : 0x09A6B073u >> (4 * cfg - 32)) & 15u), s = code & 3, k = (code >> 2) + 1;
     mf_real t, sum, ax, ay, az, ex, ey, nx, ny;
     if (cfg == 0) return MF_R(0.0);
     if (cfg == 5 || cfg == 10) return mf__quad_two_runs(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3);
