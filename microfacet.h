@@ -2717,16 +2717,26 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 #else
 #define MF__LTC_RARE MF_INLINE
 #endif
+#if defined(__CUDACC__)
+#define MF__LTC_NOINLINE static __noinline__ MF_HD
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__LTC_NOINLINE static __attribute__((noinline, unused))
+#else
+#define MF__LTC_NOINLINE MF_INLINE
+#endif
 
 /* theta / sin theta for d = cos theta in [0, 1]: a (2, 2) rational fit,
  * relative error 5.6e-7 (minimax in the relative error, fitted in long
  * double; a (3, 3) fit reaches 1.1e-9 at two more multiply-adds). */
-MF__LTC_HOT mf_real mf__theta_sin(mf_real d)
+MF__LTC_HOT mf_real mf__ts_p(mf_real d)
 {
-    mf_real p = MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
-    mf_real q = MF_R(1.0) + d * (MF_R(1.2132377142117774) + d * MF_R(0.28940008969878159));
-    return p / q;
+    return MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
 }
+MF__LTC_HOT mf_real mf__ts_q(mf_real d)
+{
+    return MF_R(1.0) + d * (MF_R(1.2132377142117774) + d * MF_R(0.28940008969878159));
+}
+MF__LTC_HOT mf_real mf__theta_sin(mf_real d) { return mf__ts_p(d) / mf__ts_q(d); }
 
 /* Integral of the cosine lobe's vector irradiance over the great arc from a to
  * b (unit vectors): (theta / sin theta) (a x b). a x b is formed as
@@ -2759,23 +2769,80 @@ MF_INLINE mf_vec3 mf__edge_vector_exact(mf_vec3 a, mf_vec3 b)
     if (!(s > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     return mf_scale(c, MF_ATAN2(s, d) / s);
 }
-/* the z component beyond pi/2 (out of line: rare in small lights) */
-MF__LTC_RARE mf_real mf__edge_z_obtuse(mf_vec3 a, mf_vec3 b, mf_real d)
+/* the z component beyond pi/2: c = a x (a + b), pi / |c| - f(-d) over one
+ * division */
+MF__LTC_HOT mf_real mf__edge_z_obtuse(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz, mf_real d)
 {
-    mf_real cx = a.y * (a.z + b.z) - a.z * (a.y + b.y), cy = a.z * (a.x + b.x) - a.x * (a.z + b.z);
-    mf_real cz = a.x * (a.y + b.y) - a.y * (a.x + b.x), s2 = cx * cx + cy * cy + cz * cz;
+    mf_real cx = ay * (az + bz) - az * (ay + by), cy = az * (ax + bx) - ax * (az + bz);
+    mf_real cz = ax * (ay + by) - ay * (ax + bx), s2 = cx * cx + cy * cy + cz * cz, sn, p, q;
     if (!(s2 > MF_R(1e-30))) return MF_R(0.0);
-    return cz * (MF_PI / MF_SQRT(s2) - mf__theta_sin(-d));
+    sn = MF_SQRT(s2);
+    p = mf__ts_p(-d); q = mf__ts_q(-d);
+    return cz * (MF_PI * q - p * sn) / (sn * q);
 }
-/* its z component only */
-MF__LTC_HOT mf_real mf__edge_z(mf_vec3 a, mf_vec3 b)
+/* its z component only (scalar arguments, then vectors) */
+MF__LTC_HOT mf_real mf__edge_zs(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz)
 {
 #ifdef MF_LTC_EXACT_EDGE
-    return mf__edge_vector_exact(a, b).z;
+    return mf__edge_vector_exact(mf_vec3_make(ax, ay, az), mf_vec3_make(bx, by, bz)).z;
 #else
-    mf_real d = a.x * b.x + a.y * b.y + a.z * b.z;
-    if (d >= MF_R(0.0)) return (a.x * (b.y - a.y) - a.y * (b.x - a.x)) * mf__theta_sin(d);
-    return mf__edge_z_obtuse(a, b, d);
+    mf_real d = ax * bx + ay * by + az * bz;
+    if (d >= MF_R(0.0)) return (ax * (by - ay) - ay * (bx - ax)) * mf__theta_sin(d);
+    return mf__edge_z_obtuse(ax, ay, az, bx, by, bz, d);
+#endif
+}
+MF__LTC_HOT mf_real mf__edge_z(mf_vec3 a, mf_vec3 b) { return mf__edge_zs(a.x, a.y, a.z, b.x, b.y, b.z); }
+/* an edge along the horizon (unit a, b with z = 0), often obtuse in clipped
+ * lights: a x b = (0, 0, c) with sin theta = |c|, so beyond pi/2 the edge is
+ * sign(c) pi - c f(-d), no square root */
+MF__LTC_HOT mf_real mf__edge_z_horizon(mf_real ax, mf_real ay, mf_real bx, mf_real by)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    return mf__edge_zs(ax, ay, MF_R(0.0), bx, by, MF_R(0.0));
+#else
+    mf_real d = ax * bx + ay * by, c;
+    if (d >= MF_R(0.0)) return (ax * (by - ay) - ay * (bx - ax)) * mf__theta_sin(d);
+    c = ax * (ay + by) - ay * (ax + bx);
+    if (c == MF_R(0.0)) return MF_R(0.0);   /* antipodal */
+    return (c > MF_R(0.0) ? MF_PI : -MF_PI) - c * mf__theta_sin(-d);
+#endif
+}
+/* Sums of edges as one fraction n / q: an acute edge adds c p(d) / q(d),
+ * the rational fit's own numerator and denominator, so that a quad pays one
+ * division for its edges (q in [1, 2.5] per acute edge: no overflow for the
+ * five edges of a clipped quad); an obtuse edge adds its value. */
+MF__LTC_HOT void mf__edge_add(mf_real ax, mf_real ay, mf_real az, mf_real bx, mf_real by, mf_real bz, mf_real *n, mf_real *q)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    *n += mf__edge_zs(ax, ay, az, bx, by, bz) * *q;
+#else
+    mf_real d = ax * bx + ay * by + az * bz, c, qd;
+    if (d >= MF_R(0.0)) {
+        c = ax * (by - ay) - ay * (bx - ax);
+        qd = mf__ts_q(d);
+        *n = *n * qd + c * mf__ts_p(d) * *q;
+        *q *= qd;
+    } else *n += mf__edge_z_obtuse(ax, ay, az, bx, by, bz, d) * *q;
+#endif
+}
+/* the same for an edge along the horizon (mf__edge_z_horizon) */
+MF__LTC_HOT void mf__edge_add_horizon(mf_real ax, mf_real ay, mf_real bx, mf_real by, mf_real *n, mf_real *q)
+{
+#ifdef MF_LTC_EXACT_EDGE
+    *n += mf__edge_z_horizon(ax, ay, bx, by) * *q;
+#else
+    mf_real d = ax * bx + ay * by, c, qd;
+    if (d >= MF_R(0.0)) {
+        c = ax * (by - ay) - ay * (bx - ax);
+        qd = mf__ts_q(d);
+        *n = *n * qd + c * mf__ts_p(d) * *q;
+    } else {
+        c = ax * (ay + by) - ay * (ax + bx);
+        if (c == MF_R(0.0)) return;   /* antipodal */
+        qd = mf__ts_q(-d);
+        *n = *n * qd + ((c > MF_R(0.0) ? MF_PI : -MF_PI) * qd - c * mf__ts_p(-d)) * *q;
+    }
+    *q *= qd;
 #endif
 }
 MF_INLINE mf_vec3 mf__edge_vector(mf_vec3 a, mf_vec3 b)
@@ -2838,43 +2905,138 @@ MF_INLINE mf_real mf__polygon_clipped(const mf_real *A, const mf_vec3 *p, int n)
     return sum;
 }
 
-/* The same, by a faster path for polygons above the horizon: quads
- * straight-line, other polygons in blocks of 16 vertices (transform and
- * normalize into a buffer, then the edges); the first vertex below the
- * horizon hands over to the clipping loop. */
-MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
+/* x, y, z transformed by the row-major A in place; the sparse form
+ * [a 0 b; 0 c 0; d 0 e] of the LTC tables (and of mf_ltc_from_inverse) in 5
+ * products instead of 9 */
+#define MF__LTC_XF(A, x, y, z) do { \
+        mf_real tx_ = (A)[0] * (x) + (A)[1] * (y) + (A)[2] * (z), tz_ = (A)[6] * (x) + (A)[7] * (y) + (A)[8] * (z); \
+        (y) = (A)[3] * (x) + (A)[4] * (y) + (A)[5] * (z); (x) = tx_; (z) = tz_; \
+    } while (0)
+#define MF__LTC_SPARSE(A) ((A)[1] == MF_R(0.0) && (A)[3] == MF_R(0.0) && (A)[5] == MF_R(0.0) && (A)[7] == MF_R(0.0))
+#define MF__LTC_XF_SPARSE(A, x, y, z) do { \
+        mf_real tx_ = (A)[0] * (x) + (A)[2] * (z); \
+        (z) = (A)[6] * (x) + (A)[8] * (z); (y) *= (A)[4]; (x) = tx_; \
+    } while (0)
+/* A quad, the common light, in scalar temporaries (no vertex structs in
+ * memory: gcc pairs x with y across them, and the shuffles cost more than
+ * the pairing saves). Above the horizon: normalized and summed straight. A
+ * planar quad crosses the horizon at most twice, so its vertices above it
+ * form one run s..s+k-1 (start and length per pattern of signs: the nibbles
+ * of two constants, patterns 0-7 and 8-15); the run, the exit point and the entry point make the
+ * clipped polygon. The two patterns with two runs go to the general loop. */
+MF__LTC_RARE mf_real mf__quad_two_runs(mf_real x0, mf_real y0, mf_real z0, mf_real x1, mf_real y1, mf_real z1,
+                                       mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3)
 {
-    mf_vec3 u[16], u0 = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), prev = u0;
-    mf_real s0 = MF_R(0.0), s1 = MF_R(0.0);
-    int base, k, m;
-    if (!p || n < 3) return MF_R(0.0);
-    if (n == 4) {
-        mf_vec3 b0 = MF__LTC_T(A, p[0]), b1 = MF__LTC_T(A, p[1]), b2 = MF__LTC_T(A, p[2]), b3 = MF__LTC_T(A, p[3]);
-        if (!(b0.z > MF_R(0.0) && b1.z > MF_R(0.0) && b2.z > MF_R(0.0) && b3.z > MF_R(0.0))) {
-            u[0] = b0; u[1] = b1; u[2] = b2; u[3] = b3;   /* clip the transformed quad */
-            return mf__polygon_clipped((const mf_real *)0, u, 4);
-        }
-        b0 = mf__unit_or_zero(b0); b1 = mf__unit_or_zero(b1); b2 = mf__unit_or_zero(b2); b3 = mf__unit_or_zero(b3);
-        s0 = mf__edge_z(b0, b1) + mf__edge_z(b1, b2);
-        s1 = mf__edge_z(b2, b3) + mf__edge_z(b3, b0);
-        return s0 + s1;
+    mf_vec3 v[4];
+    v[0] = mf_vec3_make(x0, y0, z0); v[1] = mf_vec3_make(x1, y1, z1);
+    v[2] = mf_vec3_make(x2, y2, z2); v[3] = mf_vec3_make(x3, y3, z3);
+    return mf__polygon_clipped((const mf_real *)0, v, 4);
+}
+/* the unit vector of (x, y, z) in place (0 stays 0) */
+#define MF__LTC_UNIT(x, y, z) do { \
+        mf_real l2_ = (x) * (x) + (y) * (y) + (z) * (z), r_ = l2_ > MF_R(0.0) ? MF_R(1.0) / MF_SQRT(l2_) : MF_R(0.0); \
+        (x) *= r_; (y) *= r_; (z) *= r_; \
+    } while (0)
+/* the unit horizon point of the segment from u (above) to d (below, or on
+ * it): u.z d - d.z u (both weights >= 0), z = 0 */
+#define MF__LTC_HORIZON(hx, hy, ux, uy, uz, dx, dy, dz) do { \
+        mf_real hz_ = MF_R(0.0); \
+        hx = (uz) * (dx) - (dz) * (ux); hy = (uz) * (dy) - (dz) * (uy); \
+        MF__LTC_UNIT(hx, hy, hz_); \
+    } while (0)
+MF__LTC_NOINLINE mf_real mf__quad_clipped(mf_real x0, mf_real y0, mf_real z0, mf_real x1, mf_real y1, mf_real z1,
+                                          mf_real x2, mf_real y2, mf_real z2, mf_real x3, mf_real y3, mf_real z3, int cfg)
+{
+    int code = (int)((cfg < 8 ? 0x85024100u >> (4 * cfg) : 0x09A6B073u >> (4 * cfg - 32)) & 15u), s = code & 3, k = (code >> 2) + 1;
+    mf_real t, sum, ax, ay, az, ex, ey, nx, ny;
+    if (cfg == 0) return MF_R(0.0);
+    if (cfg == 5 || cfg == 10) return mf__quad_two_runs(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3);
+    for (; s > 0; --s) {   /* rotate: the run starts at vertex 0 */
+        t = x0; x0 = x1; x1 = x2; x2 = x3; x3 = t;
+        t = y0; y0 = y1; y1 = y2; y2 = y3; y3 = t;
+        t = z0; z0 = z1; z1 = z2; z2 = z3; z3 = t;
     }
+    /* the horizon points from the vertices as they are (u.z d - d.z u scales
+     * with u): off the dependency chain of the normalizations */
+    if (k == 1) MF__LTC_HORIZON(ex, ey, x0, y0, z0, x1, y1, z1);
+    else if (k == 2) MF__LTC_HORIZON(ex, ey, x1, y1, z1, x2, y2, z2);
+    else MF__LTC_HORIZON(ex, ey, x2, y2, z2, x3, y3, z3);
+    MF__LTC_HORIZON(nx, ny, x0, y0, z0, x3, y3, z3);
+    MF__LTC_UNIT(x0, y0, z0);
+    ax = x0; ay = y0; az = z0;
+    sum = MF_R(0.0); t = MF_R(1.0);
+    if (k >= 2) {
+        MF__LTC_UNIT(x1, y1, z1);
+        mf__edge_add(x0, y0, z0, x1, y1, z1, &sum, &t);
+        ax = x1; ay = y1; az = z1;
+        if (k == 3) {
+            MF__LTC_UNIT(x2, y2, z2);
+            mf__edge_add(x1, y1, z1, x2, y2, z2, &sum, &t);
+            ax = x2; ay = y2; az = z2;
+        }
+    }
+    mf__edge_add(ax, ay, az, ex, ey, MF_R(0.0), &sum, &t);
+    mf__edge_add_horizon(ex, ey, nx, ny, &sum, &t);
+    mf__edge_add(nx, ny, MF_R(0.0), x0, y0, z0, &sum, &t);
+    return sum / t;
+}
+MF_INLINE mf_real mf__quad_sum(const mf_real *A, const mf_vec3 *p)
+{
+    mf_real x0 = p[0].x, y0 = p[0].y, z0 = p[0].z, x1 = p[1].x, y1 = p[1].y, z1 = p[1].z;
+    mf_real x2 = p[2].x, y2 = p[2].y, z2 = p[2].z, x3 = p[3].x, y3 = p[3].y, z3 = p[3].z, n0, q0, n1, q1;
+    int cfg;
+    if (!A) {
+    } else if (MF__LTC_SPARSE(A)) {
+        MF__LTC_XF_SPARSE(A, x0, y0, z0); MF__LTC_XF_SPARSE(A, x1, y1, z1);
+        MF__LTC_XF_SPARSE(A, x2, y2, z2); MF__LTC_XF_SPARSE(A, x3, y3, z3);
+    } else {
+        MF__LTC_XF(A, x0, y0, z0); MF__LTC_XF(A, x1, y1, z1); MF__LTC_XF(A, x2, y2, z2); MF__LTC_XF(A, x3, y3, z3);
+    }
+    cfg = (z0 > MF_R(0.0)) | (z1 > MF_R(0.0)) << 1 | (z2 > MF_R(0.0)) << 2 | (z3 > MF_R(0.0)) << 3;
+    if (cfg != 15) return mf__quad_clipped(x0, y0, z0, x1, y1, z1, x2, y2, z2, x3, y3, z3, cfg);
+    MF__LTC_UNIT(x0, y0, z0); MF__LTC_UNIT(x1, y1, z1); MF__LTC_UNIT(x2, y2, z2); MF__LTC_UNIT(x3, y3, z3);
+    n0 = n1 = MF_R(0.0); q0 = q1 = MF_R(1.0);
+    mf__edge_add(x0, y0, z0, x1, y1, z1, &n0, &q0); mf__edge_add(x1, y1, z1, x2, y2, z2, &n0, &q0);
+    mf__edge_add(x2, y2, z2, x3, y3, z3, &n1, &q1); mf__edge_add(x3, y3, z3, x0, y0, z0, &n1, &q1);
+    return (n0 * q1 + n1 * q0) / (q0 * q1);
+}
+
+/* Other polygons above the horizon in blocks of 16 vertices (transform and
+ * normalize into three scalar buffers, then the edges as one fraction, q
+ * below 2.5^16); the first vertex below the horizon hands over to the
+ * clipping loop. */
+MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
+{
+    mf_real ux[16], uy[16], uz[16], x, y, z, px = MF_R(0.0), py = MF_R(0.0), pz = MF_R(0.0);
+    mf_real fx = MF_R(0.0), fy = MF_R(0.0), fz = MF_R(0.0), sum = MF_R(0.0);
+    int base, k, m, sparse = A && MF__LTC_SPARSE(A);
     for (base = 0; base < n; base += 16) {
         m = n - base < 16 ? n - base : 16;
         for (k = 0; k < m; ++k) {
-            mf_vec3 w = MF__LTC_T(A, p[base + k]);
-            if (!(w.z > MF_R(0.0))) goto clip;
-            u[k] = mf__unit_or_zero(w);
+            x = p[base + k].x; y = p[base + k].y; z = p[base + k].z;
+            if (!A) {
+            } else if (sparse) MF__LTC_XF_SPARSE(A, x, y, z);
+            else MF__LTC_XF(A, x, y, z);
+            if (!(z > MF_R(0.0))) goto clip;
+            MF__LTC_UNIT(x, y, z);
+            ux[k] = x; uy[k] = y; uz[k] = z;
         }
-        if (base == 0) u0 = u[0];
-        else s0 += mf__edge_z(prev, u[0]);
-        for (k = 0; k + 1 < m; ++k) s1 += mf__edge_z(u[k], u[k + 1]);
-        prev = u[m - 1];
+        if (base == 0) { fx = ux[0]; fy = uy[0]; fz = uz[0]; }
+        else sum += mf__edge_zs(px, py, pz, ux[0], uy[0], uz[0]);
+        for (k = 0; k + 1 < m; ++k) sum += mf__edge_zs(ux[k], uy[k], uz[k], ux[k + 1], uy[k + 1], uz[k + 1]);
+        px = ux[m - 1]; py = uy[m - 1]; pz = uz[m - 1];
     }
-    s0 += mf__edge_z(prev, u0);
-    return s0 + s1;
+    return sum + mf__edge_zs(px, py, pz, fx, fy, fz);
 clip:
     return mf__polygon_clipped(A, p, n);
+}
+
+/* The signed sum of the polygon transformed by A, clipped at the horizon. */
+MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
+{
+    if (!p || n < 3) return MF_R(0.0);
+    if (n == 4) return mf__quad_sum(A, p);
+    return mf__ngon_sum(A, p, n);
 }
 
 /* the cosine form factor: the sum over 2 pi */
@@ -6816,7 +6978,22 @@ static mf_ltc mf__ltc_lookup(const float *data, int nt, int na, mf_real cos_thet
         v[k] = w00 * (mf_real)e00[k] + w10 * (mf_real)e10[k] + w01 * (mf_real)e01[k] + w11 * (mf_real)e11[k];
     if (albedo) *albedo = w00 * (mf_real)e00[4] + w10 * (mf_real)e10[4] + w01 * (mf_real)e01[4] + w11 * (mf_real)e11[4];
     if (fresnel) *fresnel = w00 * (mf_real)e00[5] + w10 * (mf_real)e10[5] + w01 * (mf_real)e01[5] + w11 * (mf_real)e11[5];
-    return mf_ltc_from_inverse(v[0], v[1], MF_R(1.0), v[2], v[3]);
+    {   /* mf_ltc_from_inverse with c = 1 */
+        mf_ltc l;
+        mf_real q = v[0] * v[3] - v[1] * v[2], rq, h = MF_LTC_MIN_DET_REL * MF_LTC_MIN_DET_REL;
+        if (!(q * q > h * (v[0] * v[0] + v[1] * v[1]) * (v[2] * v[2] + v[3] * v[3])) || !(MF_FABS(q) * MF_BIG > MF_R(1.0)) ||
+            !(MF_FABS(v[0]) + MF_FABS(v[1]) + MF_FABS(v[2]) + MF_FABS(v[3]) < MF_BIG))
+            return mf_ltc_from_inverse(MF_R(1.0), MF_R(0.0), MF_R(1.0), MF_R(0.0), MF_R(1.0));
+        rq = MF_R(1.0) / q;
+        l.Minv[0] = v[0]; l.Minv[1] = MF_R(0.0); l.Minv[2] = v[1];
+        l.Minv[3] = MF_R(0.0); l.Minv[4] = MF_R(1.0); l.Minv[5] = MF_R(0.0);
+        l.Minv[6] = v[2]; l.Minv[7] = MF_R(0.0); l.Minv[8] = v[3];
+        l.M[0] = v[3] * rq; l.M[1] = MF_R(0.0); l.M[2] = -v[1] * rq;
+        l.M[3] = MF_R(0.0); l.M[4] = MF_R(1.0); l.M[5] = MF_R(0.0);
+        l.M[6] = -v[2] * rq; l.M[7] = MF_R(0.0); l.M[8] = v[0] * rq;
+        l.det_inv = MF_FABS(q);
+        return l;
+    }
 }
 
 MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_real alpha,
