@@ -69,40 +69,36 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
 }
 
 /* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) and hashed by an
- * integer mixer (xor-shift-multiply rounds), so every sampler stays a
- * function of (u1, u2). */
+ * a counter seeded by the bits of the caller's (u1, u2) rounded to float and
+ * hashed by an integer mixer (xor-shift-multiply rounds), so every sampler
+ * stays a function of (u1, u2) and float and double builds draw the same
+ * stream (double adds 32 lower bits from a second hash). */
 MF_INLINE unsigned int mf__mix32(unsigned int x)
 {
     x ^= x >> 16; x *= 0x7feb352du; x &= 0xffffffffu;
     x ^= x >> 15; x *= 0x846ca68bu; x &= 0xffffffffu;
     return x ^ (x >> 16);
 }
-MF_INLINE unsigned int mf__real_bits(mf_real x)
+MF_INLINE unsigned int mf__float_bits(mf_real x)
 {
-#ifdef MF_USE_DOUBLE
-    union { double d; unsigned int u[2]; } v;
-    v.d = x;
-    return v.u[0] ^ mf__mix32(v.u[1]);
-#else
     union { float f; unsigned int u; } v;
-    v.f = x;
+    v.f = (float)x;
     return v.u;
-#endif
 }
 MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
 {
-    return mf__mix32(mf__real_bits(u1) ^ mf__mix32(mf__real_bits(u2) + 0x9e3779b9u));
+    return mf__mix32(mf__float_bits(u1) ^ mf__mix32(mf__float_bits(u2) + 0x9e3779b9u));
 }
 /* the next uniform in [0, 1) */
 MF_INLINE mf_real mf__stream_next(unsigned int *s)
 {
+    mf_real u;
     *s = (*s + 0x9e3779b9u) & 0xffffffffu;
+    u = (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
 #ifdef MF_USE_DOUBLE
-    return (mf_real)mf__mix32(*s) * MF_R(2.3283064365386963e-10);
-#else
-    return (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
+    u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
 #endif
+    return u;
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h). */
