@@ -1943,6 +1943,22 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
     else m = mf__ndf_sample_visible(d, w, u1, u2);
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
+
+/* Visible normals as a smooth function of (u1, u2), for quadrature over the
+ * unit square (albedo tables, LTC fits): the rejection samplers of GTR and
+ * Student-t jump with (u1, u2), so those kinds take the exact numerical
+ * inversion (07_numeric_vndf.h, microseconds) here; every other kind is
+ * mf_sample_visible. */
+MF_INLINE mf_vec3 mf__sample_visible_smooth(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 m;
+    int gtr = d->type == MF_NDF_GTR;
+    if (!gtr && d->type != MF_NDF_STUDENT_T) return mf_sample_visible(d, w, u1, u2);
+    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
+    m = mf__iso_sample_visible_view(d, gtr ? MF_R(1.0) : d->ax, gtr ? MF_R(1.0) : d->ay, w, mf__u01(u1), mf__u01(u2));
+    return d->transformed ? mf_normalize(mf_mat2_apply_transpose(d->Minv, m)) : m;
+}
 /* ======================================================================== */
 /* == 11. Specular microfacet BRDF                                          */
 /* ======================================================================== */
@@ -5384,8 +5400,11 @@ MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
     size_t bit = i * (size_t)w;
     const unsigned int *p = base + (bit >> 5);
-    unsigned long long v = ((unsigned long long)p[1] << 32 | p[0]) >> (bit & 31u);
-    return (unsigned int)(v & ((1ull << w) - 1ull));
+    unsigned int sh = (unsigned int)(bit & 31u);
+    /* the two words shifted right by sh; (p[1] << 1) << (31 - sh) keeps both
+     * shifts below 32 (no 64-bit type: C++98) */
+    unsigned int v = (p[0] >> sh) | (((p[1] << 1) & 0xffffffffu) << (31u - sh));
+    return w > 0 ? v & ((2u << (w - 1)) - 1u) & 0xffffffffu : 0u;
 }
 
 /* bits of x spread to the even positions (x < 2^16) and back */
@@ -13470,22 +13489,22 @@ static const float *mf__energy_data(int *n)
     return data;
 }
 /* The albedo integrands at (u1, u2) of the unit square: eta = 0, f cos / pdf
- * at wi = mf_brdf_sample(u) (G2 / G1, smooth except where wi crosses the
- * horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
+ * at wi reflected about the visible normal m(u) of mf__sample_visible_smooth
+ * (G2 / G1, smooth except where wi crosses the horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
  * and transmitted weights F (1 + lo) G2 and (1 - F) (1 + lo) G2 at the
  * visible normal m(u). 0 where there is no sample. */
 MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2)
 {
     mf_real v = MF_R(0.0);
     if (!(eta > MF_R(0.0))) {
-        mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);
+        mf_vec3 m = mf__sample_visible_smooth(d, wo, u1, u2), wi = mf_reflect(wo, m);
         mf_real pdf;
-        if (!(wi.z > MF_R(0.0))) return MF_R(0.0);
+        if (!(wi.z > MF_R(0.0)) || !(m.z > MF_R(0.0))) return MF_R(0.0);
         pdf = mf_brdf_pdf(d, wo, wi);
         if (!(pdf > MF_R(0.0))) return MF_R(0.0);
         v = mf_brdf(d, wo, wi) * wi.z / pdf;
     } else {
-        mf_vec3 m = mf_sample_visible(d, wo, u1, u2), wr, wt;
+        mf_vec3 m = mf__sample_visible_smooth(d, wo, u1, u2), wr, wt;
         mf_real F;
         if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return MF_R(0.0);
         F = mf_fresnel_dielectric(mf_dot(wo, m), eta);

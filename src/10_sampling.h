@@ -50,3 +50,19 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
     else m = mf__ndf_sample_visible(d, w, u1, u2);
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
+
+/* Visible normals as a smooth function of (u1, u2), for quadrature over the
+ * unit square (albedo tables, LTC fits): the rejection samplers of GTR and
+ * Student-t jump with (u1, u2), so those kinds take the exact numerical
+ * inversion (07_numeric_vndf.h, microseconds) here; every other kind is
+ * mf_sample_visible. */
+MF_INLINE mf_vec3 mf__sample_visible_smooth(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_vec3 m;
+    int gtr = d->type == MF_NDF_GTR;
+    if (!gtr && d->type != MF_NDF_STUDENT_T) return mf_sample_visible(d, w, u1, u2);
+    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
+    m = mf__iso_sample_visible_view(d, gtr ? MF_R(1.0) : d->ax, gtr ? MF_R(1.0) : d->ay, w, mf__u01(u1), mf__u01(u2));
+    return d->transformed ? mf_normalize(mf_mat2_apply_transpose(d->Minv, m)) : m;
+}

@@ -292,8 +292,11 @@ MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
     size_t bit = i * (size_t)w;
     const unsigned int *p = base + (bit >> 5);
-    unsigned long long v = ((unsigned long long)p[1] << 32 | p[0]) >> (bit & 31u);
-    return (unsigned int)(v & ((1ull << w) - 1ull));
+    unsigned int sh = (unsigned int)(bit & 31u);
+    /* the two words shifted right by sh; (p[1] << 1) << (31 - sh) keeps both
+     * shifts below 32 (no 64-bit type: C++98) */
+    unsigned int v = (p[0] >> sh) | (((p[1] << 1) & 0xffffffffu) << (31u - sh));
+    return w > 0 ? v & ((2u << (w - 1)) - 1u) & 0xffffffffu : 0u;
 }
 
 /* bits of x spread to the even positions (x < 2^16) and back */

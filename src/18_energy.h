@@ -135,22 +135,22 @@ MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, 
 
 /* @impl */
 /* The albedo integrands at (u1, u2) of the unit square: eta = 0, f cos / pdf
- * at wi = mf_brdf_sample(u) (G2 / G1, smooth except where wi crosses the
- * horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
+ * at wi reflected about the visible normal m(u) of mf__sample_visible_smooth
+ * (G2 / G1, smooth except where wi crosses the horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
  * and transmitted weights F (1 + lo) G2 and (1 - F) (1 + lo) G2 at the
  * visible normal m(u). 0 where there is no sample. */
 MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2)
 {
     mf_real v = MF_R(0.0);
     if (!(eta > MF_R(0.0))) {
-        mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);
+        mf_vec3 m = mf__sample_visible_smooth(d, wo, u1, u2), wi = mf_reflect(wo, m);
         mf_real pdf;
-        if (!(wi.z > MF_R(0.0))) return MF_R(0.0);
+        if (!(wi.z > MF_R(0.0)) || !(m.z > MF_R(0.0))) return MF_R(0.0);
         pdf = mf_brdf_pdf(d, wo, wi);
         if (!(pdf > MF_R(0.0))) return MF_R(0.0);
         v = mf_brdf(d, wo, wi) * wi.z / pdf;
     } else {
-        mf_vec3 m = mf_sample_visible(d, wo, u1, u2), wr, wt;
+        mf_vec3 m = mf__sample_visible_smooth(d, wo, u1, u2), wr, wt;
         mf_real F;
         if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return MF_R(0.0);
         F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
