@@ -980,66 +980,50 @@ MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int 
 }
 
 #ifndef MF_NO_LTC_TABLE
-static const float *mf__ltc_ggx_data(int *n);   /* the built-in table: 14_ltc_table.h */
-MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha)
+static const float *mf__ltc_ggx_data(int *n);        /* the built-in tables: 14_ltc_table.h */
+static const float *mf__ltc_beckmann_data(int *n);   /* 14_ltc_table_beckmann.h */
+/* lookup in a built-in table (data(&n): n x n entries); albedo and Fresnel
+ * through alb and fr when not null */
+static mf_ltc mf__ltc_builtin(const float *(*data)(int *), mf_real c, mf_real alpha, mf_real *alb, mf_real *fr)
 {
     int n;
-    const float *t = mf__ltc_ggx_data(&n);
-    return mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, 0);
+    const float *t = data(&n);
+    return mf__ltc_lookup(t, n, n, c, alpha, alb, fr);
 }
+static const float *mf__ltc_builtin_table(const float *(*data)(int *), int *n_theta, int *n_alpha)
+{
+    int n;
+    const float *t = data(&n);
+    if (n_theta) *n_theta = n;
+    if (n_alpha) *n_alpha = n;
+    return t;
+}
+MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha) { return mf__ltc_builtin(mf__ltc_ggx_data, cos_theta_o, alpha, 0, 0); }
 MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha)
 {
-    int n;
-    const float *t = mf__ltc_ggx_data(&n);
     mf_real a;
-    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, &a, 0);
+    mf__ltc_builtin(mf__ltc_ggx_data, cos_theta_o, alpha, &a, 0);
     return a;
 }
 MFDEF mf_real mf_ltc_ggx_fresnel(mf_real cos_theta_o, mf_real alpha)
 {
-    int n;
-    const float *t = mf__ltc_ggx_data(&n);
     mf_real f;
-    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, &f);
+    mf__ltc_builtin(mf__ltc_ggx_data, cos_theta_o, alpha, 0, &f);
     return f;
 }
-MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha)
-{
-    int n;
-    const float *t = mf__ltc_ggx_data(&n);
-    if (n_theta) *n_theta = n;
-    if (n_alpha) *n_alpha = n;
-    return t;
-}
-static const float *mf__ltc_beckmann_data(int *n);   /* 14_ltc_table_beckmann.h */
-MFDEF mf_ltc mf_ltc_beckmann(mf_real cos_theta_o, mf_real alpha)
-{
-    int n;
-    const float *t = mf__ltc_beckmann_data(&n);
-    return mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, 0);
-}
+MFDEF const float *mf_ltc_ggx_table(int *n_theta, int *n_alpha) { return mf__ltc_builtin_table(mf__ltc_ggx_data, n_theta, n_alpha); }
+MFDEF mf_ltc mf_ltc_beckmann(mf_real cos_theta_o, mf_real alpha) { return mf__ltc_builtin(mf__ltc_beckmann_data, cos_theta_o, alpha, 0, 0); }
 MFDEF mf_real mf_ltc_beckmann_albedo(mf_real cos_theta_o, mf_real alpha)
 {
-    int n;
-    const float *t = mf__ltc_beckmann_data(&n);
     mf_real a;
-    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, &a, 0);
+    mf__ltc_builtin(mf__ltc_beckmann_data, cos_theta_o, alpha, &a, 0);
     return a;
 }
 MFDEF mf_real mf_ltc_beckmann_fresnel(mf_real cos_theta_o, mf_real alpha)
 {
-    int n;
-    const float *t = mf__ltc_beckmann_data(&n);
     mf_real f;
-    mf__ltc_lookup(t, n, n, cos_theta_o, alpha, 0, &f);
+    mf__ltc_builtin(mf__ltc_beckmann_data, cos_theta_o, alpha, 0, &f);
     return f;
 }
-MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha)
-{
-    int n;
-    const float *t = mf__ltc_beckmann_data(&n);
-    if (n_theta) *n_theta = n;
-    if (n_alpha) *n_alpha = n;
-    return t;
-}
+MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha) { return mf__ltc_builtin_table(mf__ltc_beckmann_data, n_theta, n_alpha); }
 #endif
