@@ -200,7 +200,7 @@
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
  *          mixture, built by mf_gtr: mf_ndf is larger, 328 bytes in float,
  *          632 in double); GTR and Student-t NDF and visible-normal sampling
- *          by exact rejection from GGX and from exact GGX mixtures (3 to 5.5
+ *          by exact rejection from GGX and from exact GGX mixtures (3 to 6.3
  *          GGX samples per sample; was 115-160); no lost samples at grazing
  *          views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
