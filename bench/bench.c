@@ -617,6 +617,24 @@ static void bench_beckmann_vndf(void)
     }
 }
 
+/* GTR Lambda across alpha and gamma (the mixture rule's nodes grow as alpha
+ * falls) against isotropic GGX's in the same run */
+static void bench_gtr_lambda(void)
+{
+    const double as[] = { 1e-3, 0.02, 0.3 }, gs[] = { 0.5, 1.5, 2.5, 3.5 };
+    mf_ndf giso = mf_ggx(MF_R(0.3), MF_R(0.3));
+    double gl = run(b_lambda, &giso), worst = 0.0;
+    int i, j;
+    for (i = 0; i < 3; ++i)
+        for (j = 0; j < 4; ++j) {
+            mf_ndf d = mf_gtr((mf_real)as[i], (mf_real)gs[j]);
+            double t = run(b_lambda, &d);
+            if (t / gl > worst) worst = t / gl;
+            printf("bench gtr_lambda_a%g_g%g %.2f ratio_to_ggx=%.2f nodes=%d\n", as[i], gs[j], t, t / gl, d.p.gtr.nq);
+        }
+    printf("bench gtr_lambda_worst ratio_to_ggx=%.2f (GGX lambda %.2f)\n", worst, gl);
+}
+
 /* GTR and Student-t against isotropic GGX (alpha 0.3) in the same run: the
  * bench inputs (views to 1.5 rad); ./build/bench gtr_student runs only this */
 static void bench_gtr_student(void)
@@ -646,6 +664,7 @@ static void bench_gtr_student(void)
         printf("bench ggx_construct %.2f\nbench gtr_construct_noninteger_gamma %.2f ratio_to_ggx=%.2f\n", mg, mt, mt / mg);
         printf("# sizeof(mf_ndf) = %d bytes\n", (int)sizeof(mf_ndf));
     }
+    bench_gtr_lambda();
 }
 
 struct bench_kind { const char *name; mf_ndf d; };

@@ -11,8 +11,8 @@
  * exact numerical inversion of 07_numeric_vndf.h. Everything but the
  * constructor is cold. */
 /* @decl */
-/* nodes of the Lambda mixture rule: 16 for gamma < 2, 24 for gamma > 2
- * (measured accuracy in mf__gtr_lambda) */
+/* most nodes of the Lambda mixture rule (the rule takes fewer at larger
+ * alpha: mf__gtr_mix_init) */
 #define MF__GTR_NQ 24
 typedef struct mf_ndf_gtr {
     mf_real gamma;      /* tail exponent in [0, 4] */
@@ -20,14 +20,14 @@ typedef struct mf_ndf_gtr {
     mf_real L;          /* log(alpha^2) */
     mf_real E, EM;      /* expm1((1 - gamma) L), expm1(-(1 - gamma) L) */
     mf_real RK, RMK;    /* kL / expm1(kL) and -kL / expm1(-kL), k = 1 - gamma */
-    int mix;            /* Lambda: 0 closed form (integer gamma), 1 GGX mixture, 2 gamma-4 mixture */
+    int mix;            /* Lambda: 0 closed form (integer gamma), mixture of 1 GGX, 2 gamma-3, 3 gamma-4 */
     int nq;             /* nodes of the mixture rule */
     int vmode;          /* visible sampler: 0 GGX of alpha vs[0], 1 GGX mixture, 2 rejection from GGX */
     mf_real qb[MF__GTR_NQ], qw[MF__GTR_NQ];   /* mixture nodes alpha_b^2 and weights */
     mf_real vs[10];     /* the sampler's constants (mf__gtr_sampler_init) */
 } mf_ndf_gtr;
 /* @api */
-MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p);
+MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a);
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
  * alpha in [MF_ALPHA_MIN, 1], gamma in [0, 4] (clamped; see CLAMPS above).
@@ -57,7 +57,7 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     p->EM = MF_EXPM1(-k * L);
     p->RK = mf__x_over_expm1(k * L);
     p->RMK = mf__x_over_expm1(-k * L);
-    mf__gtr_mix_init(p);
+    mf__gtr_mix_init(p, a);
     mf__gtr_sampler_init(p, a);
     return d;
 }
@@ -93,6 +93,15 @@ MF_INLINE mf_real mf__gtr_lambda4(mf_real a2, mf_real t2)
            (MF_R(2.0) * A4 * qa * qa * qa);
 }
 
+/* Dimov's gamma = 3 Lambda (C.10) times 4 (1 + a2), in a2 = alpha^2, z = a2 tan^2
+ * and q = sqrt(1 + z), with qa - 1 = z / (q + 1) folded into one quotient of
+ * positive terms (also the component of the gamma-3 mixture). */
+MF_INLINE mf_real mf__gtr_lambda3s(mf_real a2, mf_real z, mf_real q)
+{
+    mf_real q1 = q + MF_R(1.0);
+    return z * ((MF_R(3.0) * a2 + MF_R(1.0)) * z + MF_R(4.0) * a2 * q1) / (q * q1 * q1);
+}
+
 /* GTR Lambda at integer gamma g = 0..4 (thesis Eq. C.7-C.11 with mu = 1/t),
  * only the one asked for; differences such as sqrt(1 + a2 t2) - 1 are
  * written as quotients so nothing cancels. */
@@ -105,9 +114,7 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
     qa = MF_SQRT(MF_R(1.0) + a2 * t2);
     ea = a2 * t2 / (qa + MF_R(1.0));                                   /* qa - 1 */
     if (g == 2) return MF_R(0.5) * ea;                                 /* C.9: GGX */
-    if (g == 3)                                                        /* C.10 */
-        return a2 * t2 * ((MF_R(3.0) * a2 + MF_R(1.0)) * ea + MF_R(4.0) * a2) /
-               (MF_R(4.0) * (a2 + MF_R(1.0)) * qa * (qa + MF_R(1.0)));
+    if (g == 3) return mf__gtr_lambda3s(a2, a2 * t2, qa) / (MF_R(4.0) * (a2 + MF_R(1.0)));   /* C.10 */
     /* C.8: Lambda1 = [(qa - qb) - log1p((qa - qb)/(1 + qb))] / L */
     d = t2 / (qa + qb);                                                /* (qa - qb) / (a2 - 1) */
     y = (a2 - MF_R(1.0)) * d / (MF_R(1.0) + qb);
@@ -118,25 +125,29 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * proportional to (1+x)^(gamma-2) (a^2+x)^-gamma; Feynman's parametrization
  * 1/(A^l B^m) = B(l,m)^-1 int s^(l-1) (1-s)^(m-1) (sA + (1-s)B)^-(l+m) ds with
  * A = 1 + x, B = a^2 + x writes it as a positive mixture over b = a^2 + s(1 - a^2)
- * in [a^2, 1] of
- *   gamma in (0, 2): GGX slope densities of alpha^2 = b (l = 2 - gamma, m = gamma);
- *   gamma in (2, 4): gamma = 4 GTR densities of alpha^2 = b (l = 4 - gamma, m = gamma).
+ * in [a^2, 1] of GTR slope densities of alpha^2 = b and integer gamma k,
+ * (1+x)^(k-2) (b+x)^-k, with l = k - gamma, m = gamma:
+ *   gamma in (0, 2): GGX (k = 2);  (2, 3): k = 3;  (3, 4): k = 4
+ * (k = 3 needs no (1+x)^2 factor, and its Lambda is the cheaper one).
  * Lambda is linear in the slope density, so it is the same mixture of Dimov's
- * Lambdas (C.9, C.11). In y = log b the mixing weight is
+ * Lambdas (C.9, C.10, C.11). In y = log b the mixing weight is
  * (y - log a^2)^(l-1) (-y)^(m-1) times a smooth positive factor, and the
  * components are analytic in the strip |Im y| < pi: mf__gtr_mix_init builds
  * the Gauss-Jacobi rule of those exponents on [log a^2, 0], its weights times
- * that factor, normalized. Integer gamma: the closed forms C.7-C.11.
- * 16 nodes for gamma < 2, 24 for gamma > 2. Measured against an independent
- * 1D integral of the slope density (tests/test_ndf.c, alpha 1e-4 and 1e-3..1,
+ * that factor, normalized. Its nodes grow with the interval's length |log a^2|,
+ * from 3-4 at alpha near 1 to 19 (k = 2), 24 (k = 3), 24 (k = 4) at alpha 1e-4:
+ * a line above the least count that met 5e-7 against the 1D integral below
+ * at 60 alphas 1e-4..1 (9-18 gammas per k, near the integers included, 12
+ * angles to 89.9 deg); k = 4 below alpha 2e-4 would want 25-27 and keeps 24
+ * (2e-6).
+ * Integer gamma: the closed forms C.7-C.11. Measured against an independent
+ * 1D integral of the slope density (tests/test_ndf.c, 24 alphas 1e-4..1,
  * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 2.0e-6
  * in double (test bound 1e-5); float 6.8e-6 where Lambda > 1e-4 and 8.1e-7
- * on 1 + Lambda. Cost (make bench, float): 12x GGX's Lambda for gamma < 2,
- * 35x for gamma in (2, 4) (the gamma-4 components are dearer); building the
- * rule makes mf_gtr at non-integer gamma cost 5-15 us (Golub-Welsch; integer
- * gamma costs nothing), and the rule makes mf_ndf 544 bytes in double (192
- * before), 288 in float (104). tan^2 is capped at 1e16
- * (Lambda ~ 1e8, G1 ~ 1e-8) so float never overflows. */
+ * on 1 + Lambda. Cost (make bench, float, ratio to GGX's Lambda): see the
+ * README's speed table; building the rule makes mf_gtr at non-integer gamma
+ * cost a few us (Golub-Welsch; integer gamma costs nothing). tan^2 is capped
+ * at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so float never overflows. */
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
@@ -150,7 +161,14 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
         }
         return MF_R(0.5) * sum;
     }
-    if (p->mix == 2) {   /* C.11 cancels to -1e-22 in float at small a^2 t^2 */
+    if (p->mix == 2) {   /* weights carry C.10's 1 / (4 (1 + b)) */
+        for (j = 0; j < p->nq; ++j) {
+            mf_real bt = p->qb[j] * t2;
+            sum += p->qw[j] * mf__gtr_lambda3s(p->qb[j], bt, MF_SQRT(MF_R(1.0) + bt));
+        }
+        return sum;
+    }
+    if (p->mix == 3) {   /* C.11 cancels to -1e-22 in float at small a^2 t^2 */
         for (j = 0; j < p->nq; ++j) sum += p->qw[j] * mf__gtr_lambda4(p->qb[j], t2);
         return mf_max(sum, MF_R(0.0));
     }
@@ -162,74 +180,82 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
  * Welsch (1969): nodes are the eigenvalues of the Jacobi matrix of the
  * polynomials' recurrence, weights the squared first components of its unit
  * eigenvectors (unnormalized: the caller normalizes). Implicit QL with Wilkinson
- * shifts, at most 60 sweeps per eigenvalue. */
-MF_INLINE void mf__gauss_jacobi(int n, mf_real ea, mf_real eb, mf_real *x, mf_real *w)
+ * shifts, at most 60 sweeps per eigenvalue. In double in every build: float
+ * nodes would move b = exp(y) by 2e-6 at alpha 1e-4. */
+MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *w)
 {
-    mf_real e[MF__GTR_NQ];
+    double e[MF__GTR_NQ];
     int i, l, m, it;
     for (i = 0; i < n; ++i) {
-        mf_real s = MF_R(2.0) * (mf_real)i + ea + eb, k = (mf_real)(i + 1), t = MF_R(2.0) * k + ea + eb;
-        x[i] = i == 0 ? (eb - ea) / (ea + eb + MF_R(2.0)) : (eb - ea) * (eb + ea) / (s * (s + MF_R(2.0)));
-        e[i] = i + 1 < n ? MF_SQRT(MF_R(4.0) * k * (k + ea) * (k + eb) * (k + ea + eb) /
-                                   (t * t * (t + MF_R(1.0)) * (t - MF_R(1.0)))) : MF_R(0.0);
-        w[i] = i == 0 ? MF_R(1.0) : MF_R(0.0);   /* first row of the eigenvector matrix */
+        double s = 2.0 * i + ea + eb, k = i + 1.0, t = 2.0 * k + ea + eb;
+        x[i] = i == 0 ? (eb - ea) / (ea + eb + 2.0) : (eb - ea) * (eb + ea) / (s * (s + 2.0));
+        e[i] = i + 1 < n ? sqrt(4.0 * k * (k + ea) * (k + eb) * (k + ea + eb) /
+                                   (t * t * (t + 1.0) * (t - 1.0))) : 0.0;
+        w[i] = i == 0 ? 1.0 : 0.0;   /* first row of the eigenvector matrix */
     }
     for (l = 0; l < n; ++l) {
         for (it = 0; it < 60; ++it) {
-            mf_real g, r, s, c, pp, f, bb;
+            double g, r, s, c, pp, f, bb;
             for (m = l; m < n - 1; ++m)
-                if (MF_FABS(e[m]) <= MF_EPS * (MF_FABS(x[m]) + MF_FABS(x[m + 1]))) break;
+                if (fabs(e[m]) <= 2.220446049250313e-16 * (fabs(x[m]) + fabs(x[m + 1]))) break;
             if (m == l) break;
-            g = (x[l + 1] - x[l]) / (MF_R(2.0) * e[l]);
-            r = MF_SQRT(g * g + MF_R(1.0));
-            g = x[m] - x[l] + e[l] / (g + (g >= MF_R(0.0) ? r : -r));
-            s = c = MF_R(1.0); pp = MF_R(0.0);
+            g = (x[l + 1] - x[l]) / (2.0 * e[l]);
+            r = sqrt(g * g + 1.0);
+            g = x[m] - x[l] + e[l] / (g + (g >= 0.0 ? r : -r));
+            s = c = 1.0; pp = 0.0;
             for (i = m - 1; i >= l; --i) {
                 f = s * e[i]; bb = c * e[i];
-                r = MF_SQRT(f * f + g * g); e[i + 1] = r;
-                if (r == MF_R(0.0)) { x[i + 1] -= pp; e[m] = MF_R(0.0); break; }
+                r = sqrt(f * f + g * g); e[i + 1] = r;
+                if (r == 0.0) { x[i + 1] -= pp; e[m] = 0.0; break; }
                 s = f / r; c = g / r; g = x[i + 1] - pp;
-                r = (x[i] - g) * s + MF_R(2.0) * c * bb;
+                r = (x[i] - g) * s + 2.0 * c * bb;
                 pp = s * r; x[i + 1] = g + pp; g = c * r - bb;
                 f = w[i + 1]; w[i + 1] = s * w[i] + c * f; w[i] = c * w[i] - s * f;
             }
-            if (r == MF_R(0.0) && i >= l) continue;
-            x[l] -= pp; e[l] = g; e[m] = MF_R(0.0);
+            if (r == 0.0 && i >= l) continue;
+            x[l] -= pp; e[l] = g; e[m] = 0.0;
         }
     }
     for (i = 0; i < n; ++i) w[i] *= w[i];
 }
 
-/* The mixture rule of mf__gtr_lambda for p->gamma and p->L (see there). With
+/* The mixture rule of mf__gtr_lambda for p->gamma and alpha a (see there), built
+ * in double in every build. With
  * u = y - log a^2, the smooth factor is, in logs,
  *   (l-1) log(expm1(u)/u) + (m-1) log(expm1(y)/y)      (the exact endpoint factors)
- *   + gamma-4 only: log of b times the component's normalization,
- *     1 + c/b + c^2/(3 b^2), c = 1 - b. */
-MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p)
+ *   + log of b times the component's normalization N_k(b)^-1 (C.5):
+ *     k = 3: (1 + b) / b;  k = 4: (b^2 + b + 1) / b^2  (k = 2: constant).
+ * Nodes: ceil(c1 |log a^2| + c0), (c1, c0) = (0.85, 2.5), (1.15, 2.5), (1.3, 3)
+ * for k = 2, 3, 4 (see mf__gtr_lambda), at most MF__GTR_NQ. */
+MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
 {
-    mf_real g = p->gamma, L = p->L, el, em = g - MF_R(1.0), x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ];
-    mf_real top = -MF_BIG, sum = MF_R(0.0);
-    int i, n;
-    if (g == MF_FLOOR(g)) { p->mix = 0; p->nq = 0; return; }
-    p->mix = g < MF_R(2.0) ? 1 : 2;
-    n = p->nq = g < MF_R(2.0) ? 16 : MF__GTR_NQ;
-    el = (g < MF_R(2.0) ? MF_R(2.0) : MF_R(4.0)) - g - MF_R(1.0);
+    double g = p->gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
+    double top = -1e300, sum = 0.0, fn;
+    int i, n, k;
+    if (g == floor(g)) { p->mix = 0; p->nq = 0; return; }
+    p->mix = g < 2.0 ? 1 : g < 3.0 ? 2 : 3;
+    k = p->mix + 1;                       /* the components' integer gamma */
+    fn = k == 2 ? ceil(2.5 - 0.85 * L) : k == 3 ? ceil(2.5 - 1.15 * L) :
+         ceil(3.0 - 1.3 * L);
+    n = p->nq = fn < MF__GTR_NQ ? (int)fn : MF__GTR_NQ;
+    el = k - g - 1.0;
     /* x = 1 is b = 1 (exponent m - 1), x = -1 is b = a^2 (exponent l - 1) */
     mf__gauss_jacobi(n, em, el, x, w);
     for (i = 0; i < n; ++i) {
-        mf_real y = MF_R(0.5) * L * (MF_R(1.0) - x[i]), u = y - L, b = MF_EXP(y), f;
-        f = (u > MF_R(1e-6) ? el * MF_LOG(MF_EXPM1(u) / u) : MF_R(0.0)) +
-            (y < MF_R(-1e-6) ? em * MF_LOG(MF_EXPM1(y) / y) : MF_R(0.0));
-        if (p->mix == 2) {
-            mf_real c = MF_R(1.0) - b, cb = c / b;
-            f += MF_LOG(MF_R(1.0) + cb + cb * cb / MF_R(3.0));
-        }
-        p->qb[i] = b;
+        double y = 0.5 * L * (1.0 - x[i]), u = y - L, b = exp(y), f;
+        f = (u > 1e-6 ? el * log(expm1(u) / u) : 0.0) +
+            (y < -1e-6 ? em * log(expm1(y) / y) : 0.0);
+        if (k == 3) f += log((1.0 + b) / b);
+        if (k == 4) f += log((b * b + b + 1.0) / (b * b));
+        qb[i] = b;
         lf[i] = f;
         if (f > top) top = f;
     }
-    for (i = 0; i < n; ++i) { p->qw[i] = w[i] * MF_EXP(lf[i] - top); sum += p->qw[i]; }
-    for (i = 0; i < n; ++i) p->qw[i] /= sum;
+    for (i = 0; i < n; ++i) { w[i] *= exp(lf[i] - top); sum += w[i]; }
+    for (i = 0; i < n; ++i) {
+        p->qb[i] = (mf_real)qb[i];
+        p->qw[i] = (mf_real)(w[i] / (k == 3 ? sum * 4.0 * (1.0 + qb[i]) : sum));
+    }
 }
 
 /* tan^2(theta) at D-cos mass t from the pole (q = 1 - t beyond): w = sin^2 +

@@ -240,13 +240,12 @@ static void test_lambda_dense(void)
      * 1e-6 on 1 + Lambda (measured 6.8e-6, 8.1e-7); Student-t's incomplete-beta
      * difference cancels in float: 1e-2 and 1e-3 (measured 4.4e-3, 4.0e-4). */
     const double tr[2] = { MFT_TOL(1e-5, 3e-5), MFT_TOL(1e-5, 1e-2) }, t1[2] = { MFT_TOL(1e-5, 1e-6), MFT_TOL(1e-5, 1e-3) };
-    double al[12], worst[2] = { 0.0, 0.0 }, worst1[2] = { 0.0, 0.0 }, wpar[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } };
+    double al[20], worst[2] = { 0.0, 0.0 }, worst1[2] = { 0.0, 0.0 }, wpar[2][3] = { { 0, 0, 0 }, { 0, 0, 0 } };
     int ia, ig, it, k, fails = 0;
-    al[0] = 1e-4;
-    for (ia = 1; ia < 12; ++ia) al[ia] = pow(10.0, -3.0 + 3.0 * (ia - 1) / 10.0);
+    for (ia = 0; ia < 20; ++ia) al[ia] = pow(10.0, -4.0 + 4.0 * ia / 19.0);   /* 1e-4 .. 1 */
     for (k = 0; k < 2; ++k)
         for (ig = 0; ig < (k == 0 ? 25 : 11); ++ig)
-            for (ia = 0; ia < 12; ++ia) {
+            for (ia = 0; ia < 20; ++ia) {
                 dense_ctx c;
                 mf_ndf d;
                 c.kind = k == 0 ? MF_NDF_GTR : MF_NDF_STUDENT_T;
