@@ -4310,15 +4310,18 @@ MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm)
     return d->p.gtr.norm / (MF_POW(den, d->p.gtr.gamma) * l2 * l2);
 }
 
-/* Dimov's gamma = 4 Lambda (C.11), in t2 = tan^2(theta) and a2 = alpha^2
- * (also the component of the gamma-4 mixture). */
-MF_INLINE mf_real mf__gtr_lambda4(mf_real a2, mf_real t2)
+/* Dimov's gamma = 4 Lambda (C.11) times 16 (a2^2 + a2 + 1), in a2 = alpha^2,
+ * z = a2 tan^2 and q = sqrt(1 + z) (also the component of the gamma-4 mixture).
+ * C.11's bracket, 3 (5 a2^2 + 2 a2 + 1)(q+1)^2 - 8 (a2^2 + a2 + 1)(q + 1/2), is
+ * (3q+1)(q-1) + a2 (6q^2 + 4q + 2) + a2^2 (15q^2 + 22q + 11): with q - 1 = e =
+ * z / (q+1) every term is positive (the textbook form cancels to -1e-22 in
+ * float at small z). One division: E = z / ((q+1) q^3), e = E q^3. */
+MF_INLINE mf_real mf__gtr_lambda4s(mf_real a2, mf_real z, mf_real q)
 {
-    mf_real a2t2 = a2 * t2, qa = MF_SQRT(MF_R(1.0) + a2t2), ea = a2t2 / (qa + MF_R(1.0));
-    mf_real a4 = a2 * a2, A4 = MF_R(8.0) * (a4 + a2 + MF_R(1.0));
-    return a2t2 * (MF_R(12.0) * a4 - A4 * ea * (qa + MF_R(0.5)) / (qa + MF_R(1.0)) +
-                   MF_R(3.0) * a2t2 * (MF_R(5.0) * a4 + MF_R(2.0) * a2 + MF_R(1.0))) /
-           (MF_R(2.0) * A4 * qa * qa * qa);
+    mf_real q1 = q + MF_R(1.0), q3 = q * q * q, E = z / (q1 * q3), e = E * q3;
+    mf_real P = a2 * (((MF_R(6.0) + MF_R(15.0) * a2) * q + (MF_R(4.0) + MF_R(22.0) * a2)) * q +
+                      (MF_R(2.0) + MF_R(11.0) * a2));
+    return E * (MF_R(12.0) * a2 * a2 * q1 + e * ((MF_R(3.0) * q + MF_R(1.0)) * e + P));
 }
 
 /* Dimov's gamma = 3 Lambda (C.10) times 4 (1 + a2), in a2 = alpha^2, z = a2 tan^2
@@ -4336,7 +4339,9 @@ MF_INLINE mf_real mf__gtr_lambda3s(mf_real a2, mf_real z, mf_real q)
 MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
 {
     mf_real qa, qb, ea, d, y;
-    if (g == 4) return mf__gtr_lambda4(a2, t2);                       /* C.11 */
+    if (g == 4)                                                        /* C.11 */
+        return mf__gtr_lambda4s(a2, a2 * t2, MF_SQRT(MF_R(1.0) + a2 * t2)) /
+               (MF_R(16.0) * (a2 * a2 + a2 + MF_R(1.0)));
     qb = MF_SQRT(MF_R(1.0) + t2);
     if (g == 0) return t2 / (MF_R(2.0) * (MF_R(1.0) + qb));           /* C.7: GGX with alpha = 1 */
     qa = MF_SQRT(MF_R(1.0) + a2 * t2);
@@ -4396,11 +4401,13 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
         }
         return sum;
     }
-    if (p->mix == 3) {   /* C.11 cancels to -1e-22 in float at small a^2 t^2 */
-        for (j = 0; j < p->nq; ++j) sum += p->qw[j] * mf__gtr_lambda4(p->qb[j], t2);
-        return mf_max(sum, MF_R(0.0));
+    if (p->mix == 3) {   /* weights carry C.11's 1 / (16 (b^2 + b + 1)) */
+        for (j = 0; j < p->nq; ++j) {
+            mf_real bt = p->qb[j] * t2;
+            sum += p->qw[j] * mf__gtr_lambda4s(p->qb[j], bt, MF_SQRT(MF_R(1.0) + bt));
+        }
+        return sum;
     }
-    /* integer gamma: C.11 can round to -4e-23 in float */
     return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
 }
 
@@ -4447,7 +4454,8 @@ MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *
     for (i = 0; i < n; ++i) w[i] *= w[i];
 }
 
-/* The mixture rule of mf__gtr_lambda for p->gamma and p->L (see there). With
+/* The mixture rule of mf__gtr_lambda for p->gamma and alpha a (see there), built
+ * in double in every build. With
  * u = y - log a^2, the smooth factor is, in logs,
  *   (l-1) log(expm1(u)/u) + (m-1) log(expm1(y)/y)      (the exact endpoint factors)
  *   + log of b times the component's normalization N_k(b)^-1 (C.5):
@@ -4481,7 +4489,8 @@ MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
     for (i = 0; i < n; ++i) { w[i] *= exp(lf[i] - top); sum += w[i]; }
     for (i = 0; i < n; ++i) {
         p->qb[i] = (mf_real)qb[i];
-        p->qw[i] = (mf_real)(w[i] / (k == 3 ? sum * 4.0 * (1.0 + qb[i]) : sum));
+        p->qw[i] = (mf_real)(w[i] / (k == 3 ? sum * 4.0 * (1.0 + qb[i]) :
+                                     k == 4 ? sum * 16.0 * (qb[i] * qb[i] + qb[i] + 1.0) : sum));
     }
 }
 

@@ -623,16 +623,20 @@ static void bench_gtr_lambda(void)
 {
     const double as[] = { 1e-3, 0.02, 0.3 }, gs[] = { 0.5, 1.5, 2.5, 3.5 };
     mf_ndf giso = mf_ggx(MF_R(0.3), MF_R(0.3));
-    double gl = run(b_lambda, &giso), worst = 0.0;
-    int i, j;
+    double worst = 0.0;
+    int i, j, r;
     for (i = 0; i < 3; ++i)
         for (j = 0; j < 4; ++j) {
             mf_ndf d = mf_gtr((mf_real)as[i], (mf_real)gs[j]);
-            double t = run(b_lambda, &d);
+            double t = 1e300, gl = 1e300, x;
+            for (r = 0; r < 3; ++r) {   /* interleaved: both see the same machine state */
+                x = run(b_lambda, &giso); if (x < gl) gl = x;
+                x = run(b_lambda, &d); if (x < t) t = x;
+            }
             if (t / gl > worst) worst = t / gl;
-            printf("bench gtr_lambda_a%g_g%g %.2f ratio_to_ggx=%.2f nodes=%d\n", as[i], gs[j], t, t / gl, d.p.gtr.nq);
+            printf("bench gtr_lambda_a%g_g%g %.2f ratio_to_ggx=%.2f nodes=%d ggx=%.2f\n", as[i], gs[j], t, t / gl, d.p.gtr.nq, gl);
         }
-    printf("bench gtr_lambda_worst ratio_to_ggx=%.2f (GGX lambda %.2f)\n", worst, gl);
+    printf("bench gtr_lambda_worst ratio_to_ggx=%.2f\n", worst);
 }
 
 /* GTR and Student-t against isotropic GGX (alpha 0.3) in the same run: the
