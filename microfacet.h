@@ -4464,7 +4464,7 @@ MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *
  * for k = 2, 3, 4 (see mf__gtr_lambda), at most MF__GTR_NQ. */
 MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
 {
-    double g = p->gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
+    double g = (double)p->gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
     double top = -1e300, sum = 0.0, fn;
     int i, n, k;
     if (g == floor(g)) { p->mix = 0; p->nq = 0; return; }
