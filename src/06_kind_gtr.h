@@ -70,6 +70,29 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2);
+/* sqrt(x) for x in [1, 2e16] in the mixture loops of mf__gtr_lambda. Float:
+ * the bit-level first guess of 1/sqrt(x) (relative error < 3.5%), three
+ * Newton steps y (3 - x y^2) / 2 (each squares the error: a few float ulps),
+ * times x. Unlike sqrtf, which may set errno, compilers vectorize it across
+ * the loops' groups of 4 nodes (2x faster at -O2). Double: MF_SQRT (the same
+ * steps in double were no faster there). */
+MF_INLINE mf_real mf__gtr_sqrt(mf_real x)
+{
+#ifdef MF_USE_DOUBLE
+    return MF_SQRT(x);
+#else
+    union { float f; unsigned int u; } v;
+    float y;
+    v.f = x;
+    v.u = 0x5f3759dfu - (v.u >> 1);
+    y = v.f;
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    return x * y;
+#endif
+}
+
 /* @cold */
 /* D, homogeneous of degree -4: N / ((sin^2 + a^2 cos^2)^gamma |wm|^4) */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm)
@@ -156,31 +179,34 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
-    mf_real t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16)), sum = MF_R(0.0);
-    int j;
+    mf_real t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16)), s[4];
+    int j, k;
     if (!(t2 > MF_R(0.0))) return MF_R(0.0);
-    if (p->mix == 1) {
-        for (j = 0; j < p->nq; ++j) {
-            mf_real bt = p->qb[j] * t2;
-            sum += p->qw[j] * bt / (MF_SQRT(MF_R(1.0) + bt) + MF_R(1.0));
-        }
-        return MF_R(0.5) * sum;
+    if (p->mix == 0)   /* integer gamma: C.8 and C.11 can round to -4e-23 in float */
+        return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
+    /* nq is a multiple of 4 (zero-weight padding): four independent sums, one
+     * loop per component so that each vectorizes */
+    s[0] = s[1] = s[2] = s[3] = MF_R(0.0);
+    if (p->mix == 1) {          /* C.9 (times 2) */
+        for (j = 0; j < p->nq; j += 4)
+            for (k = 0; k < 4; ++k) {
+                mf_real bt = p->qb[j + k] * t2;
+                s[k] += p->qw[j + k] * bt / (mf__gtr_sqrt(MF_R(1.0) + bt) + MF_R(1.0));
+            }
+    } else if (p->mix == 2) {   /* C.10 */
+        for (j = 0; j < p->nq; j += 4)
+            for (k = 0; k < 4; ++k) {
+                mf_real b = p->qb[j + k], bt = b * t2;
+                s[k] += p->qw[j + k] * mf__gtr_lambda3s(b, bt, mf__gtr_sqrt(MF_R(1.0) + bt));
+            }
+    } else {                    /* C.11 */
+        for (j = 0; j < p->nq; j += 4)
+            for (k = 0; k < 4; ++k) {
+                mf_real b = p->qb[j + k], bt = b * t2;
+                s[k] += p->qw[j + k] * mf__gtr_lambda4s(b, bt, mf__gtr_sqrt(MF_R(1.0) + bt));
+            }
     }
-    if (p->mix == 2) {   /* weights carry C.10's 1 / (4 (1 + b)) */
-        for (j = 0; j < p->nq; ++j) {
-            mf_real bt = p->qb[j] * t2;
-            sum += p->qw[j] * mf__gtr_lambda3s(p->qb[j], bt, MF_SQRT(MF_R(1.0) + bt));
-        }
-        return sum;
-    }
-    if (p->mix == 3) {   /* weights carry C.11's 1 / (16 (b^2 + b + 1)) */
-        for (j = 0; j < p->nq; ++j) {
-            mf_real bt = p->qb[j] * t2;
-            sum += p->qw[j] * mf__gtr_lambda4s(p->qb[j], bt, MF_SQRT(MF_R(1.0) + bt));
-        }
-        return sum;
-    }
-    return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
+    return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
 /* Gauss-Jacobi rule for the weight (1-x)^ea (1+x)^eb on [-1, 1] by Golub and
@@ -244,7 +270,7 @@ MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
     k = p->mix + 1;                       /* the components' integer gamma */
     fn = k == 2 ? ceil(2.5 - 0.85 * L) : k == 3 ? ceil(2.5 - 1.15 * L) :
          ceil(3.0 - 1.3 * L);
-    n = p->nq = fn < MF__GTR_NQ ? (int)fn : MF__GTR_NQ;
+    n = fn < MF__GTR_NQ ? (int)fn : MF__GTR_NQ;
     el = k - g - 1.0;
     /* x = 1 is b = 1 (exponent m - 1), x = -1 is b = a^2 (exponent l - 1) */
     mf__gauss_jacobi(n, em, el, x, w);
@@ -259,10 +285,11 @@ MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
         if (f > top) top = f;
     }
     for (i = 0; i < n; ++i) { w[i] *= exp(lf[i] - top); sum += w[i]; }
+    for (p->nq = n; p->nq % 4; ++p->nq) { p->qb[p->nq] = MF_R(1.0); p->qw[p->nq] = MF_R(0.0); }
     for (i = 0; i < n; ++i) {
         p->qb[i] = (mf_real)qb[i];
-        p->qw[i] = (mf_real)(w[i] / (k == 3 ? sum * 4.0 * (1.0 + qb[i]) :
-                                     k == 4 ? sum * 16.0 * (qb[i] * qb[i] + qb[i] + 1.0) : sum));
+        p->qw[i] = (mf_real)(w[i] / (k == 2 ? sum * 2.0 : k == 3 ? sum * 4.0 * (1.0 + qb[i]) :
+                                     sum * 16.0 * (qb[i] * qb[i] + qb[i] + 1.0)));
     }
 }
 
