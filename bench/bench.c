@@ -621,11 +621,11 @@ static void bench_beckmann_vndf(void)
  * falls) against isotropic GGX's in the same run */
 static void bench_gtr_lambda(void)
 {
-    const double as[] = { 1e-3, 0.02, 0.3 }, gs[] = { 0.5, 1.5, 2.5, 3.5 };
+    const double as[] = { 1e-4, 1e-3, 0.02, 0.3 }, gs[] = { 0.5, 1.5, 2.5, 3.5 };
     mf_ndf giso = mf_ggx(MF_R(0.3), MF_R(0.3));
     double worst = 0.0;
     int i, j, r;
-    for (i = 0; i < 3; ++i)
+    for (i = 0; i < 4; ++i)
         for (j = 0; j < 4; ++j) {
             mf_ndf d = mf_gtr((mf_real)as[i], (mf_real)gs[j]);
             double t = 1e300, gl = 1e300, x;
