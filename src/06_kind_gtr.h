@@ -372,9 +372,31 @@ MF_INLINE mf_vec3 mf__gtr_sample(const mf_ndf *d, int vis, mf_vec3 w, mf_real u1
     u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));   /* the closed-form inverse CDF */
     return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), mf__gtr_tan2(d, u1, MF_R(1.0) - u1), u2);
 }
+/* Normals of density D cos by the inverse CDF: w = sin^2 + a^2 cos^2 has
+ * density ~ w^-gamma on [a^2, 1], so w^k = A q + t (k = 1 - gamma, A = a^(2k),
+ * q = 1 - t; a sum of positive terms) and tan^2 = (w - a^2) / (1 - w): one
+ * pow. Its relative error is about (2/|k| + 2 + |log a^2|) u (w/(w - a^2) +
+ * w/(1 - w)), u the unit roundoff (the roundings of A and of A q + t raised
+ * to 1/k, then the two differences cancel); where that exceeds 128 u (t near
+ * 0 or 1, gamma near 1, alpha near 1) the careful mf__gtr_tan2 answers.
+ * Measured in float against a long double inverse (alpha 1e-4..0.99, gamma
+ * 0.1..4): at most 150 u, the careful path's own worst 264 u. */
 MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    return mf__gtr_sample(d, 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), u1, u2);
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t, k = MF_R(1.0) - p->gamma;
+    mf_real a2 = d->ax * d->ax, w, n, e, tan2;
+    if (p->vmode == 0) return mf__gtr_ggx(p->vs[0], 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), t, u2);
+    /* A = exp(kL), not E + 1: float's E rounds near -1 at small alpha */
+    w = k != MF_R(0.0) ? MF_POW(MF_EXP(k * p->L) * q + t, MF_R(1.0) / k) : MF_EXP(p->L * q);
+    n = w - a2; e = MF_R(1.0) - w;
+    /* (2/|k| + 2 + |L|) (w/n + w/e) <= 128, without dividing by k */
+    if (n > MF_R(0.0) && e > MF_R(0.0) &&
+        (MF_R(2.0) + (MF_R(2.0) - p->L) * MF_FABS(k)) * w * (n + e) <= MF_R(128.0) * MF_FABS(k) * n * e)
+        tan2 = n / e;
+    else
+        tan2 = mf__gtr_tan2(d, t, q);
+    return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), tan2, u2);
 }
 MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
