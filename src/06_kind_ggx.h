@@ -101,6 +101,15 @@ MF_INLINE mf_real mf__stream_next(unsigned int *s)
     return u;
 }
 
+/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
+ * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
+ * power-law draws (GTR, Student-t) */
+MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
+{
+    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
+    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
+}
+
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }

@@ -302,13 +302,6 @@ MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real
     mf_real q = MF_R(1.0) - u1;
     return vis ? mf_ggx_sample_visible(a, a, w, u1, u2) : mf__wm_from_slope_u(a, a, q > MF_R(0.0) ? u1 / q : MF_BIG, u2);
 }
-/* log1p(x) / x for x in (-1, 0], one log (Goldberg 1991: the rounding of
- * 1 + x cancels in log(1 + x) / ((1 + x) - 1)) */
-MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
-{
-    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
-    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
-}
 MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
