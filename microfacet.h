@@ -1355,8 +1355,9 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
 }
 
 /* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) rounded to float and
- * hashed by an integer mixer (xor-shift-multiply rounds), so every sampler
+ * a counter seeded by the bits of the caller's (u1, u2) rounded to float
+ * (u2's multiplied by an odd constant) and hashed by an integer mixer
+ * (xor-shift-multiply rounds), so every sampler
  * stays a function of (u1, u2) and float and double builds draw the same
  * stream (double adds 32 lower bits from a second hash). */
 MF_INLINE unsigned int mf__mix32(unsigned int x)
@@ -1373,7 +1374,7 @@ MF_INLINE unsigned int mf__float_bits(mf_real x)
 }
 MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
 {
-    return mf__mix32(mf__float_bits(u1) ^ mf__mix32(mf__float_bits(u2) + 0x9e3779b9u));
+    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
 }
 /* the next uniform in [0, 1) */
 MF_INLINE mf_real mf__stream_next(unsigned int *s)
@@ -1415,11 +1416,11 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_re
  * limit C.6), isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma. Lambda from
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
- * rule built at construction (mf__gtr_mix_init); NDF and visible-normal
- * sampling by exact rejection from GGX or from a mixture of GGX lobes
- * (mf__gtr_sample), falling back on the closed-form inverse CDF and the
- * exact numerical inversion of 07_numeric_vndf.h. Everything but the
- * constructor is cold. */
+ * rule built at construction (mf__gtr_mix_init); NDF sampling by the
+ * closed-form inverse CDF (mf__gtr_sample_D), visible normals by exact
+ * rejection from GGX or from a mixture of GGX lobes (mf__gtr_sample_visible),
+ * falling back on the exact numerical inversion of 07_numeric_vndf.h.
+ * Everything but the constructor is cold. */
 MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p);
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
@@ -1917,10 +1918,11 @@ MF_FORCE_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *             slope along the view from its CDF (safeguarded Newton on erf),
  *             the other slope from erfinv. The CDF is scaled by tan(theta), so
  *             normal incidence (cot = infinity) and tiny alpha are exact.
- *   GTR, Student-t  exact numerical inversion (see mf__iso_sample_visible):
- *             64 evaluations (32 in float builds) of the inverse NDF CDF per
- *             sample, no rejection, deterministic; about 50-100x the cost of
- *             GGX (see make bench). */
+ *   GTR, Student-t  exact rejection from GGX's VNDF or from an exact
+ *             mixture of GGX lobes (mf__gtr_sample_visible,
+ *             mf__student_t_sample_visible), the exact numerical inversion
+ *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
+ *             closed-form inverse CDF. */
 
 /* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
 MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
@@ -4576,10 +4578,10 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
         W[5] = c1 * vs[5]; W[6] = c1 * vs[6];
         tot = W[0] + W[1] + W[2] + W[3] + W[4] + W[5] + W[6];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, kk, us, lz, z, sz, n1, n2, cb, d2, b;
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), kk, us, lz, z, sz, n1, n2, cb, d2, b;
             int k, pc;
             for (k = 0; k < 6 && x >= W[k]; ++k) x -= W[k];
-            u = mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in [0, 1) */
             pc = k == 6 ? 4 : (k + 1) >> 1;   /* piece: [0, a^2/4], [a^2/4, 4a^2], [4a^2, 1/4], [1/4, 4], [4, inf) */
             kk = vs[7 + k];
             us = k == 0 || k == 6 ? u : u * vs[13 + k];
@@ -4884,10 +4886,10 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
         W[0] = c0 * vs[0]; W[1] = th * sg * vs[1]; W[2] = c0 * vs[2]; W[3] = th * sg * vs[3]; W[4] = c0p * vs[4];
         tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, lz, iz, rho, b1, n;
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n;
             int k;
             for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
-            u = mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in [0, 1) */
             /* log z = log z_e + kk u log1p(-u s)/(-u s); z_e = 1/4 (terms 0, 1, 3), 4 (2, 4) */
             lz = (k == 2 || k == 4 ? MF_R(1.3862944) : MF_R(-1.3862944)) +
                  vs[5 + k] * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * vs[8 + k] : -u);

@@ -69,8 +69,9 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
 }
 
 /* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) rounded to float and
- * hashed by an integer mixer (xor-shift-multiply rounds), so every sampler
+ * a counter seeded by the bits of the caller's (u1, u2) rounded to float
+ * (u2's multiplied by an odd constant) and hashed by an integer mixer
+ * (xor-shift-multiply rounds), so every sampler
  * stays a function of (u1, u2) and float and double builds draw the same
  * stream (double adds 32 lower bits from a second hash). */
 MF_INLINE unsigned int mf__mix32(unsigned int x)
@@ -87,7 +88,7 @@ MF_INLINE unsigned int mf__float_bits(mf_real x)
 }
 MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
 {
-    return mf__mix32(mf__float_bits(u1) ^ mf__mix32(mf__float_bits(u2) + 0x9e3779b9u));
+    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
 }
 /* the next uniform in [0, 1) */
 MF_INLINE mf_real mf__stream_next(unsigned int *s)

@@ -5,11 +5,11 @@
  * limit C.6), isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma. Lambda from
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
- * rule built at construction (mf__gtr_mix_init); NDF and visible-normal
- * sampling by exact rejection from GGX or from a mixture of GGX lobes
- * (mf__gtr_sample), falling back on the closed-form inverse CDF and the
- * exact numerical inversion of 07_numeric_vndf.h. Everything but the
- * constructor is cold. */
+ * rule built at construction (mf__gtr_mix_init); NDF sampling by the
+ * closed-form inverse CDF (mf__gtr_sample_D), visible normals by exact
+ * rejection from GGX or from a mixture of GGX lobes (mf__gtr_sample_visible),
+ * falling back on the exact numerical inversion of 07_numeric_vndf.h.
+ * Everything but the constructor is cold. */
 /* @decl */
 /* nodes of the Lambda mixture rule: 16 for gamma < 2, 24 for gamma > 2
  * (measured accuracy in mf__gtr_lambda) */
@@ -335,10 +335,10 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
         W[5] = c1 * vs[5]; W[6] = c1 * vs[6];
         tot = W[0] + W[1] + W[2] + W[3] + W[4] + W[5] + W[6];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, kk, us, lz, z, sz, n1, n2, cb, d2, b;
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), kk, us, lz, z, sz, n1, n2, cb, d2, b;
             int k, pc;
             for (k = 0; k < 6 && x >= W[k]; ++k) x -= W[k];
-            u = mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in [0, 1) */
             pc = k == 6 ? 4 : (k + 1) >> 1;   /* piece: [0, a^2/4], [a^2/4, 4a^2], [4a^2, 1/4], [1/4, 4], [4, inf) */
             kk = vs[7 + k];
             us = k == 0 || k == 6 ? u : u * vs[13 + k];

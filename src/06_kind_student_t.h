@@ -178,10 +178,10 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
         W[0] = c0 * vs[0]; W[1] = th * sg * vs[1]; W[2] = c0 * vs[2]; W[3] = th * sg * vs[3]; W[4] = c0p * vs[4];
         tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, lz, iz, rho, b1, n;
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n;
             int k;
             for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
-            u = mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in [0, 1) */
             /* log z = log z_e + kk u log1p(-u s)/(-u s); z_e = 1/4 (terms 0, 1, 3), 4 (2, 4) */
             lz = (k == 2 || k == 4 ? MF_R(1.3862944) : MF_R(-1.3862944)) +
                  vs[5 + k] * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * vs[8 + k] : -u);
