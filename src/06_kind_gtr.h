@@ -302,7 +302,7 @@ MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real
     mf_real q = MF_R(1.0) - u1;
     return vis ? mf_ggx_sample_visible(a, a, w, u1, u2) : mf__wm_from_slope_u(a, a, q > MF_R(0.0) ? u1 / q : MF_BIG, u2);
 }
-MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
     const mf_real *vs = p->vs;
@@ -366,6 +366,11 @@ MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
     if (it < 64) return m;
     return mf__iso_sample_visible_view(d, MF_R(1.0), MF_R(1.0), w, u1, u2);
+}
+
+MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    return mf__gtr_sample_vis(d, w, u1, u2);
 }
 
 /* Normals of density D cos by the inverse CDF: w = sin^2 + a^2 cos^2 has
