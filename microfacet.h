@@ -209,10 +209,11 @@
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
  *          mixture of GGX, gamma-3 or gamma-4 GTR, built by mf_gtr with 4-24
  *          nodes as alpha falls; 4.2-16.5x GGX's Lambda in float: mf_ndf is
- *          larger, 328 bytes in float, 632 in double); GTR and Student-t NDF and visible-normal sampling
- *          by exact rejection from GGX and from exact GGX mixtures (3 to 6.3
- *          GGX samples per sample; was 115-160); no lost samples at grazing
- *          views for any kind. LTC: rational
+ *          larger, 376 bytes in float, 720 in double); GTR and Student-t NDF
+ *          sampling by the closed-form inverse CDF with one pow (1.8-2.5x
+ *          GGX), visible normals by exact rejection from GGX and from exact
+ *          GGX mixtures (2.5-5.3x GGX; was 115-160); no lost samples at
+ *          grazing views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
  *          middle entry (the published texture layout: the raw data of
  *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed
@@ -492,6 +493,7 @@ typedef float mf_real;
 #define mf__leadr_lambda MF__SYM(mf__leadr_lambda)
 #define mf__leadr_sample_D MF__SYM(mf__leadr_sample_D)
 #define mf__leadr_sample_visible MF__SYM(mf__leadr_sample_visible)
+#define mf__student_t_sampler_init MF__SYM(mf__student_t_sampler_init)
 #define mf__student_t_D MF__SYM(mf__student_t_D)
 #define mf__student_t_lambda MF__SYM(mf__student_t_lambda)
 #define mf__student_t_sample_D MF__SYM(mf__student_t_sample_D)
@@ -600,7 +602,7 @@ typedef struct mf_ndf_gtr {
     int nq;             /* nodes of the mixture rule */
     int vmode;          /* visible sampler: 0 GGX of alpha vs[0], 1 GGX mixture, 2 rejection from GGX */
     mf_real qb[MF__GTR_NQ], qw[MF__GTR_NQ];   /* mixture nodes alpha_b^2 and weights */
-    mf_real vs[10];     /* the sampler's constants (mf__gtr_sampler_init) */
+    mf_real vs[21];     /* the samplers' constants (mf__gtr_sampler_init) */
 } mf_ndf_gtr;
 typedef struct mf_ndf_leadr {
     mf_real mx, my;            /* mean slope */
@@ -615,6 +617,7 @@ typedef struct mf_ndf_student_t {
     mf_real lbeta;      /* log B(gamma - 1, 1/2) */
     mf_real vndf_p;     /* tail exponent of the numerical VNDF sampler's substitution */
     mf_real vk;         /* gamma > 2: 1/K of the visible sampler's rejection from GGX */
+    mf_real vs[12];     /* gamma < 2: the visible sampler's mixture envelope (mf__student_t_sampler_init) */
 } mf_ndf_student_t;
 /* A tabulated (piecewise-linear) distribution: the arrays of one built NDF, all
  * in one allocation (block, bytes) owned until mf_tabulated_release. Fields are
@@ -1354,8 +1357,9 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
 }
 
 /* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) rounded to float and
- * hashed by an integer mixer (xor-shift-multiply rounds), so every sampler
+ * a counter seeded by the bits of the caller's (u1, u2) rounded to float
+ * (u2's multiplied by an odd constant) and hashed by an integer mixer
+ * (xor-shift-multiply rounds), so every sampler
  * stays a function of (u1, u2) and float and double builds draw the same
  * stream (double adds 32 lower bits from a second hash). */
 MF_INLINE unsigned int mf__mix32(unsigned int x)
@@ -1372,7 +1376,7 @@ MF_INLINE unsigned int mf__float_bits(mf_real x)
 }
 MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
 {
-    return mf__mix32(mf__float_bits(u1) ^ mf__mix32(mf__float_bits(u2) + 0x9e3779b9u));
+    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
 }
 /* the next uniform in [0, 1) */
 MF_INLINE mf_real mf__stream_next(unsigned int *s)
@@ -1384,6 +1388,15 @@ MF_INLINE mf_real mf__stream_next(unsigned int *s)
     u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
 #endif
     return u;
+}
+
+/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
+ * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
+ * power-law draws (GTR, Student-t) */
+MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
+{
+    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
+    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h). */
@@ -1405,11 +1418,11 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_re
  * limit C.6), isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma. Lambda from
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
- * rule built at construction (mf__gtr_mix_init); NDF and visible-normal
- * sampling by exact rejection from GGX or from a mixture of GGX lobes
- * (mf__gtr_sample), falling back on the closed-form inverse CDF and the
- * exact numerical inversion of 07_numeric_vndf.h. Everything but the
- * constructor is cold. */
+ * rule built at construction (mf__gtr_mix_init); NDF sampling by the
+ * closed-form inverse CDF (mf__gtr_sample_D), visible normals by exact
+ * rejection from GGX or from a mixture of GGX lobes (mf__gtr_sample_visible),
+ * falling back on the exact numerical inversion of 07_numeric_vndf.h.
+ * Everything but the constructor is cold. */
 MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a);
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
@@ -1520,6 +1533,7 @@ MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1,
  * visible normals by exact rejection from GGX or from an exact GGX mixture
  * (mf__student_t_sample_visible), falling back on the exact numerical
  * inversion of 07_numeric_vndf.h. Everything but the constructor is cold. */
+MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p);
 /* Student's t-distribution of slopes (STD), anisotropic. gamma in
  * [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] (clamped). */
 MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
@@ -1538,6 +1552,7 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
     d.p.student_t.vndf_p = MF_R(2.0) / (MF_R(1.0) - beta);
     /* K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v = 1 */
     d.p.student_t.vk = MF_R(0.25) * MF_EXP(-gamma * MF_LOG(g1 / gamma));
+    mf__student_t_sampler_init(&d.p.student_t);
     return d;
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
@@ -1928,10 +1943,11 @@ MF_FORCE_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *             slope along the view from its CDF (safeguarded Newton on erf),
  *             the other slope from erfinv. The CDF is scaled by tan(theta), so
  *             normal incidence (cot = infinity) and tiny alpha are exact.
- *   GTR, Student-t  exact numerical inversion (see mf__iso_sample_visible):
- *             64 evaluations (32 in float builds) of the inverse NDF CDF per
- *             sample, no rejection, deterministic; about 50-100x the cost of
- *             GGX (see make bench). */
+ *   GTR, Student-t  exact rejection from GGX's VNDF or from an exact
+ *             mixture of GGX lobes (mf__gtr_sample_visible,
+ *             mf__student_t_sample_visible), the exact numerical inversion
+ *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
+ *             closed-form inverse CDF. */
 
 /* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
 MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
@@ -4564,129 +4580,151 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
     return lwL * mf__x_over_expm1(k * L) / mf__x_over_expm1(k * L * lwL);
 }
 
-/* Visible normals (vis = 1, density D_w) and normals of density D cos
- * (vis = 0, w unused: the same with Lambda = 0), exact, by one of
- * (mf__gtr_sampler_init chooses):
+/* Visible normals (density D_w), exact, by one of (mf__gtr_sampler_init
+ * chooses):
  * - gamma = 2, gamma = 0, alpha = 1: GGX of alpha, 1, 1 (the same D);
- * - gamma in (0, 2) where the GGX proposal below has K > 1.5 (alpha below
- *   about 0.15): the slope density (1+x)^(gamma-2) (a^2+x)^-gamma is the
- *   mixture over z in (0, inf) of GGX densities of alpha_b^2 = b =
+ * - gamma in (0, 2), alpha <= 1/4, where the GGX proposal below has K > 1.5
+ *   (alpha below about 0.15): the slope density (1+x)^(gamma-2) (a^2+x)^-gamma
+ *   is the mixture over z in (0, inf) of GGX densities of alpha_b^2 = b =
  *   (a^2 + z) / (1 + z) with weight f(z) = z^(1-gamma) / ((1 + z)(a^2 + z))
  *   (Feynman's identity of mf__gtr_lambda with z = s / (1 - s)). The visible
  *   normals of a mixture: b with weight f(z) (1 + Lambda_b(w)) (each
  *   component's projected area), then b's GGX VNDF. z is drawn by rejection
- *   from the envelope f <= z^(1-g)/a^2, z^-g, z^(-1-g) on [0, a^2], [a^2, 1],
- *   [1, inf) times 1 + Lambda_b = (1 + sqrt(1 + b t^2))/2 <= 1 + Lambda_{a^2}
- *   + (t/2) sqrt z below 1 (b <= a^2 + z), 1 + Lambda_1 above (t = tan
- *   theta_w): five power laws, each inverted in closed form;
+ *   from f <= z^(1-g) m1(z) m2(z), m1 = min(1/a^2, 1/(2a sqrt z), 1/z) >=
+ *   1/(a^2 + z) and m2 = min(1, 1/(2 sqrt z), 1/z) >= 1/(1 + z) (AM-GM, each
+ *   within 4/5 on pieces split at a^2/4, 4a^2 and 1/4, 4), times 1 + Lambda_b
+ *   = (1 + sqrt(1 + b t^2))/2 <= its value at b = 5a^2/4 on [0, a^2/4],
+ *   1 + Lambda_{a^2} + (t/2) sqrt z up to 1/4 (b <= a^2 + z), 1 + Lambda_1
+ *   beyond (t = tan theta_w): seven power laws (mf__gtr_sampler_init), each
+ *   inverted in closed form, log z = log z_e + kk u log1p(-u s) / (-u s);
  * - otherwise (gamma in (2, 4], or below 2 with K <= 1.5): rejection from
  *   GGX's VNDF of alpha_p (mf__gtr_sampler_init), accepting with D / (K D_GGX)
  *   (the max(0, w.m) factor cancels), K = sup D / D_GGX <= 1.27 above gamma 2.
  * Normals facing away from w (float rounding at the cap's edge) are drawn
  * again. The first proposal uses (u1, u2), further draws the stream of
  * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
- * numerical inversion of 07_numeric_vndf.h answers (the closed-form inverse
- * CDF for vis = 0). */
+ * numerical inversion of 07_numeric_vndf.h answers. */
 MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real q = MF_R(1.0) - u1;
     return vis ? mf_ggx_sample_visible(a, a, w, u1, u2) : mf__wm_from_slope_u(a, a, q > MF_R(0.0) ? u1 / q : MF_BIG, u2);
 }
-MF_INLINE mf_vec3 mf__gtr_sample(const mf_ndf *d, int vis, mf_vec3 w, mf_real u1, mf_real u2)
+MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
-    mf_real a2 = d->ax * d->ax, g = p->gamma, L = p->L;
+    const mf_real *vs = p->vs;
+    mf_real a2 = d->ax * d->ax, g = p->gamma;
     unsigned int st;
     int it = 0, fresh = 1;
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    if (p->vmode == 0) return mf__gtr_ggx(p->vs[0], vis, w, u1, u2);
-    if (vis && !(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (p->vmode == 0) return mf_ggx_sample_visible(vs[0], vs[0], w, u1, u2);
+    if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     st = mf__stream_seed(u1, u2);
     if (p->vmode == 2) {
-        mf_real ap = p->vs[0], ap2 = ap * ap;
-        m = mf__gtr_ggx(ap, vis, w, u1, u2);
+        mf_real ap = vs[0], ap2 = ap * ap;
+        m = mf_ggx_sample_visible(ap, ap, w, u1, u2);
         for (it = 0; it < 64; ++it) {
             /* D / (K D_GGX) = cK ((1+x)/(a^2+x))^(gamma-2) ((ap^2+x)/(a^2+x))^2, x = s2/c2 */
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
-            r = p->vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
-            if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && (!vis || mf_dot(w, m) > MF_R(0.0))) break;
-            m = mf__gtr_ggx(ap, vis, w, mf__stream_next(&st), mf__stream_next(&st));
+            r = vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
+            if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
+            m = mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
         }
     } else {
-        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), th, c0, c1, W[5], tot;
-        th = !vis ? MF_R(0.0) : sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
-        /* 1 + Lambda_b at b = a^2 and at b = 1 */
-        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * a2));
-        c1 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th));
-        W[0] = c0 * p->vs[0]; W[1] = th * p->vs[1]; W[2] = c0 * p->vs[2]; W[3] = th * p->vs[3];
-        W[4] = c1 / g;
-        tot = W[0] + W[1] + W[2] + W[3] + W[4];
+        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
+        th = sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
+        t4 = MF_R(4.0) * th * th;
+        /* 1 + Lambda_b at b = a^2, 5a^2/4 and 1 */
+        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * a2));
+        c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4 * a2));
+        c1 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4));
+        W[0] = c0p * vs[0]; W[1] = c0 * vs[1]; W[2] = th * vs[2]; W[3] = c0 * vs[3]; W[4] = th * vs[4];
+        W[5] = c1 * vs[5]; W[6] = c1 * vs[6];
+        tot = W[0] + W[1] + W[2] + W[3] + W[4] + W[5] + W[6];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, z, b, num, den, bound;
-            int k;
-            for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
-            u = MF_R(1.0) - mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in (0, 1] */
-            if (k == 4) {                        /* [1, inf), in 1/z = u^(1/gamma) */
-                mf_real iz = MF_EXP(MF_LOG(u) * p->vs[9]);
-                den = MF_R(1.0) + iz;
-                b = (a2 * iz + MF_R(1.0)) / den;
-                num = MF_R(1.0);                 /* f/e = num/den = 1 / ((1 + a^2/z)(1 + 1/z)) */
-                den *= MF_R(1.0) + a2 * iz;
-                bound = c1;
-            } else {
-                mf_real lz;
-                if (k < 2)                       /* [0, a^2]: z = a^2 u^(1/q) */
-                    lz = L + MF_LOG(u) * p->vs[7 + k];
-                else {                           /* [a^2, 1]: z^q = a^(2q) (1 + u expm1(-qL)) */
-                    mf_real iq = p->vs[k == 2 ? 6 : 5];
-                    lz = iq != MF_R(0.0) ? L + MF_LOG1P(u * (k == 2 ? p->EM : p->vs[4])) * iq : L * (MF_R(1.0) - u);
-                }
-                z = MF_EXP(lz);
-                den = MF_R(1.0) + z;
-                b = (a2 + z) / den;
-                num = k < 2 ? a2 : z;            /* f/e = a^2 or z over (a^2 + z)(1 + z) */
-                den *= a2 + z;
-                bound = c0 + th * MF_SQRT(z);
-            }
-            if (mf__stream_next(&st) * bound * den < num * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * b))) {
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), kk, us, lz, z, sz, n1, n2, cb, d2, b;
+            int k, pc;
+            for (k = 0; k < 6 && x >= W[k]; ++k) x -= W[k];
+            pc = k == 6 ? 4 : (k + 1) >> 1;   /* piece: [0, a^2/4], [a^2/4, 4a^2], [4a^2, 1/4], [1/4, 4], [4, inf) */
+            kk = vs[7 + k];
+            us = k == 0 || k == 6 ? u : u * vs[13 + k];
+            /* the piece's end z_e: its upper end where the density rises (kk < 0), else its lower one */
+            lz = kk < MF_R(0.0) ? (pc == 0 ? p->L - MF_R(1.3862944) : pc == 1 ? p->L + MF_R(1.3862944) : pc == 2 ? MF_R(-1.3862944) : MF_R(1.3862944))
+                                : (pc == 1 ? p->L - MF_R(1.3862944) : pc == 2 ? p->L + MF_R(1.3862944) : pc == 3 ? MF_R(-1.3862944) : MF_R(1.3862944));
+            lz += kk * u * mf__log1p_over_x_fast(-us);
+            z = MF_EXP(mf_min(lz, MF_R(34.5)));          /* z <= 1e15: b within 1e-15 of 1 beyond */
+            sz = MF_SQRT(z);
+            /* f / (z^(1-g) m1 m2) = n1 n2 / ((a^2 + z)(1 + z)), times 1 + Lambda_b over its bound cb */
+            n1 = pc == 0 ? a2 : pc == 1 ? MF_R(2.0) * a * sz : z;
+            n2 = pc < 3 ? MF_R(1.0) : pc == 3 ? MF_R(2.0) * sz : z;
+            cb = pc == 0 ? c0p : pc < 3 ? c0 + th * sz : c1;
+            d2 = MF_R(1.0) + z;
+            b = (a2 + z) / d2;
+            if (mf__stream_next(&st) * cb * (a2 + z) * d2 < n1 * n2 * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b))) {
                 mf_real ab = MF_SQRT(b);
-                m = fresh ? mf__gtr_ggx(ab, vis, w, u1, u2)
-                          : mf__gtr_ggx(ab, vis, w, mf__stream_next(&st), mf__stream_next(&st));
+                m = fresh ? mf_ggx_sample_visible(ab, ab, w, u1, u2)
+                          : mf_ggx_sample_visible(ab, ab, w, mf__stream_next(&st), mf__stream_next(&st));
                 fresh = 0;
-                if (m.z > MF_R(0.0) && (!vis || mf_dot(w, m) > MF_R(0.0))) break;   /* float's cap edge: draw again */
+                if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
             }
         }
     }
     MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
     if (it < 64) return m;
-    if (vis) return mf__iso_sample_visible_view(d, MF_R(1.0), MF_R(1.0), w, u1, u2);
-    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));   /* the closed-form inverse CDF */
-    return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), mf__gtr_tan2(d, u1, MF_R(1.0) - u1), u2);
-}
-MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
-{
-    return mf__gtr_sample(d, 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), u1, u2);
-}
-MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
-{
-    return mf__gtr_sample(d, 1, w, u1, u2);
+    return mf__iso_sample_visible_view(d, MF_R(1.0), MF_R(1.0), w, u1, u2);
 }
 
-/* The visible sampler's mode and constants (see mf__gtr_sample_visible).
- * Mixture (gamma in (0, 2)): vs[0..3] the envelope's masses
- * a^(2(1-g))/(2-g), a^(3-2g)/(5/2-g) on [0, a^2] and -L/r(qL), q = 1-g, 3/2-g,
- * on [a^2, 1] (r(x) = x/expm1(x)); vs[4] = expm1(-qL) for q = 3/2 - g
- * (q = 1 - g: p->EM); vs[5], vs[6] = 1/q for q = 3/2 - g, 1 - g (0 for
- * q = 0, where log z = L (1 - u)); vs[7..9] = 1/(2 - g), 1/(5/2 - g), 1/g. Rejection:
- * vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max of the ratio at
- * x = 0, infinity and its one stationary point. */
+MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    return mf__gtr_sample_vis(d, w, u1, u2);
+}
+
+/* Normals of density D cos by the inverse CDF: w = sin^2 + a^2 cos^2 has
+ * density ~ w^-gamma on [a^2, 1], so w^k = A q + t (k = 1 - gamma, A = a^(2k),
+ * q = 1 - t; a sum of positive terms) and tan^2 = (w - a^2) / (1 - w): one
+ * pow. Its relative error is about (2/|k| + 2 + |log a^2|) u (w/(w - a^2) +
+ * w/(1 - w)), u the unit roundoff (the roundings of A and of A q + t raised
+ * to 1/k, then the two differences cancel); where that exceeds 128 u (t near
+ * 0 or 1, gamma near 1, alpha near 1) the careful mf__gtr_tan2 answers.
+ * Measured in float against a long double inverse (alpha 1e-4..0.99, gamma
+ * 0.1..4): at most 150 u, the careful path's own worst 264 u. */
+MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t, k = MF_R(1.0) - p->gamma;
+    mf_real a2 = d->ax * d->ax, w, n, e, tan2;
+    if (p->vmode == 0) return mf__gtr_ggx(p->vs[0], 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), t, u2);
+    /* A = vs[19] = exp(kL), not E + 1: float's E rounds near -1 at small alpha */
+    w = k != MF_R(0.0) ? MF_POW(p->vs[19] * q + t, p->vs[20]) : MF_EXP(p->L * q);
+    n = w - a2; e = MF_R(1.0) - w;
+    /* (2/|k| + 2 + |L|) (w/n + w/e) <= 128, without dividing by k */
+    if (n > MF_R(0.0) && e > MF_R(0.0) &&
+        (MF_R(2.0) + (MF_R(2.0) - p->L) * MF_FABS(k)) * w * (n + e) <= MF_R(128.0) * MF_FABS(k) * n * e)
+        tan2 = n / e;
+    else
+        tan2 = mf__gtr_tan2(d, t, q);
+    return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), tan2, u2);
+}
+
+/* The visible sampler's mode and constants (see mf__gtr_sample_visible);
+ * vs[19] = a^(2k) = exp(kL) and vs[20] = 1/k (k = 1 - gamma, 0 at gamma 1)
+ * for mf__gtr_sample_D. Mixture: term j has the density C_j z^(q_j - 1) on
+ * its piece [lo, hi]; vs[j] = its mass C_j z_e^q k_j, vs[7 + j] = kk_j =
+ * -k_j (q > 0, z_e = hi) or k_j (q <= 0, z_e = lo), k_j = s_j / |q_j|,
+ * vs[13 + j] = s_j = -expm1(-|q_j| log(hi/lo)) (1 on the two unbounded
+ * pieces). Rejection: vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max
+ * of the ratio at x = 0, infinity and its one stationary point. */
 MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
 {
-    mf_real g = p->gamma, L = p->L, a2 = a * a, q3 = MF_R(1.5) - g, npi = p->norm * MF_PI;
+    mf_real g = p->gamma, L = p->L, a2 = a * a, npi = p->norm * MF_PI;
     mf_real ap2, c1, c0, l0, li, lk, x;
+    int j;
     p->vmode = 0;
     p->vs[0] = g == MF_R(2.0) ? a : MF_R(1.0);
     if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return;
+    p->vs[19] = MF_EXP((MF_R(1.0) - g) * L);
+    p->vs[20] = g != MF_R(1.0) ? MF_R(1.0) / (MF_R(1.0) - g) : MF_R(0.0);
     /* GGX proposal: alpha_p^2 = a^gamma below gamma 2 (it minimizes K there),
      * a^2 / (1 + (gamma - 2)(1 - a^2)) above; K = the largest of the ratio at
      * x = 0 (npi ap^2 a^(-2g)), infinity (npi / ap^2) and its one stationary
@@ -4698,23 +4736,33 @@ MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
     x = c1 != MF_R(0.0) ? -c0 / c1 : MF_R(-1.0);
     if (x > MF_R(0.0))
         lk = mf_max(lk, li + (g - MF_R(2.0)) * MF_LOG1P(x) + MF_R(2.0) * MF_LOG1P(x / ap2) - g * MF_LOG(a2 + x) + MF_R(2.0) * MF_LOG(ap2));
-    if (g > MF_R(2.0) || lk < MF_LOG(MF_R(1.5))) {   /* K <= 1.5 below gamma 2: alpha >~ 0.15 */
+    /* K <= 1.5 below gamma 2: alpha >~ 0.15; the mixture's pieces need 4a^2 <= 1/4 */
+    if (g > MF_R(2.0) || lk < MF_LOG(MF_R(1.5)) || a > MF_R(0.25)) {
         p->vmode = 2;
         p->vs[0] = MF_SQRT(ap2);
         p->vs[1] = npi / (ap2 * MF_EXP(lk));
         return;
     }
     p->vmode = 1;
-    p->vs[0] = (p->E + MF_R(1.0)) / (MF_R(2.0) - g);
-    p->vs[1] = (p->E + MF_R(1.0)) * a / (MF_R(2.5) - g);
-    p->vs[2] = -L / p->RK;
-    p->vs[3] = -L / mf__x_over_expm1(q3 * L);
-    p->vs[4] = MF_EXPM1(-q3 * L);
-    p->vs[5] = q3 != MF_R(0.0) ? MF_R(1.0) / q3 : MF_R(0.0);
-    p->vs[6] = g != MF_R(1.0) ? MF_R(1.0) / (MF_R(1.0) - g) : MF_R(0.0);
-    p->vs[7] = MF_R(1.0) / (MF_R(2.0) - g);
-    p->vs[8] = MF_R(1.0) / (MF_R(2.5) - g);
-    p->vs[9] = MF_R(1.0) / g;
+    for (j = 0; j < 7; ++j) {
+        /* piece pc = (j+1)/2 of the ends 0, a^2/4, 4a^2, 1/4, 4, inf (in logs); q_j; log C_j */
+        mf_real ln4 = MF_R(1.3862943611198906), ends[6], q, lo, hi, ll, sj, kj, lc, le;
+        int pc = j == 6 ? 4 : (j + 1) >> 1;
+        ends[0] = -MF_BIG; ends[1] = L - ln4; ends[2] = L + ln4; ends[3] = -ln4; ends[4] = ln4; ends[5] = MF_BIG;
+        q = (j == 0 || j == 2 ? MF_R(2.0) : j == 1 || j == 4 ? MF_R(1.5) : j == 3 ? MF_R(1.0) : j == 5 ? MF_R(0.5) : MF_R(0.0)) - g;
+        lo = ends[pc]; hi = ends[pc + 1];
+        lc = pc == 0 ? -L : pc == 1 ? -MF_R(0.5) * L - MF_LOG(MF_R(2.0)) : pc == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
+        if (pc == 0 || pc == 4) { sj = MF_R(1.0); kj = MF_R(1.0) / MF_FABS(q); }
+        else {
+            ll = hi - lo;
+            sj = -MF_EXPM1(-MF_FABS(q) * ll);
+            kj = ll / mf__x_over_expm1(-MF_FABS(q) * ll);
+        }
+        le = q > MF_R(0.0) ? hi : lo;
+        p->vs[j] = MF_EXP(lc + q * le) * kj;
+        p->vs[7 + j] = q > MF_R(0.0) ? -kj : kj;
+        if (j >= 1 && j <= 5) p->vs[13 + j] = sj;
+    }
 }
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
@@ -4839,10 +4887,19 @@ MF_COLD mf_real mf__student_t_tail(const mf_ndf *d, mf_real tan2)
     return MF_EXP(-g1 * MF_LOG1P(tan2 / g1));
 }
 
+/* Normals of density D cos: tan^2 = (g-1)(q^(-1/(g-1)) - 1), q = 1 - t, one
+ * pow where its relative error, about (1 + 1/(g-1)) u w / (w - 1) with
+ * w = q^(-1/(g-1)) (u the unit roundoff), is below 128 u; mf__student_t_tan2
+ * (log1p, expm1) near the pole and at large gamma. */
 MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    return mf__wm_from_slope_u(d->ax, d->ay, mf__student_t_tan2(d, t, MF_R(1.0) - t), u2);
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t, g1 = d->p.student_t.gamma - MF_R(1.0), w, tan2;
+    w = MF_POW(q, MF_R(-1.0) / g1);
+    if (q > MF_R(0.0) && (g1 + MF_R(1.0)) * w <= MF_R(128.0) * g1 * (w - MF_R(1.0)))
+        tan2 = mf_min(g1 * (w - MF_R(1.0)), MF_BIG);
+    else
+        tan2 = mf__student_t_tan2(d, t, q);
+    return mf__wm_from_slope_u(d->ax, d->ay, tan2, u2);
 }
 
 /* Visible normals, exact, in the space stretched to unit roughness, where
@@ -4856,10 +4913,12 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  *   the density is the mixture over z = B/(1-B) in (0, inf) of GGX densities
  *   of alpha_b^2 = b = (g-1)(1 + z)/z with weight f(z) = z^(g-2) / (1 + z).
  *   As for GTR (mf__gtr_sample_visible), b with weight f (1 + Lambda_b(w)),
- *   then b's GGX VNDF; z by rejection from f <= z^(g-2), z^(g-3) on (0, 1],
- *   [1, inf) times 1 + Lambda_b <= 1 + Lambda_{g-1} + (t/2) sqrt(g-1) z^-1/2
- *   (sqrt(x + y) <= sqrt x + sqrt y): four
- *   power laws (integrable because g > 3/2). Components beyond
+ *   then b's GGX VNDF; z by rejection from f <= z^(g-2) m(z), m = min(1,
+ *   1/(2 sqrt z), 1/z) >= 1/(1 + z) (AM-GM, within 4/5; pieces split at 1/4
+ *   and 4), times 1 + Lambda_b <= 1 + Lambda_{g-1} + (t/2) sqrt(g-1) z^-1/2
+ *   (sqrt(x + y) <= sqrt x + sqrt y) up to 4, its value at b = 5(g-1)/4
+ *   beyond: five power laws (integrable because g > 3/2), each inverted in
+ *   closed form (mf__student_t_sampler_init). Components beyond
  *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
  *   that b.
  * Further draws come from mf__stream_next; after 64 rejections (probability
@@ -4887,26 +4946,31 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (mf__stream_next(&st) < r) break;
         }
     } else {
-        mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, c0, W[4], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
+        const mf_real *vs = d->p.student_t.vs;
+        mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, t4, c0, c0p, W[5], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
         th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
-        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1));   /* 1 + Lambda at b = g - 1 */
-        W[0] = c0 / g1; W[1] = th * sg / (g - MF_R(1.5));
-        W[2] = c0 / (MF_R(2.0) - g); W[3] = th * sg / (MF_R(2.5) - g);
-        tot = W[0] + W[1] + W[2] + W[3];
+        t4 = MF_R(4.0) * th * th * g1;
+        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4));                /* 1 + Lambda at b = g - 1 */
+        c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4));  /* at b = 5(g - 1)/4 */
+        W[0] = c0 * vs[0]; W[1] = th * sg * vs[1]; W[2] = c0 * vs[2]; W[3] = th * sg * vs[3]; W[4] = c0p * vs[4];
+        tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, lz, iz, rho, b1;
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n;
             int k;
-            for (k = 0; k < 3 && x >= W[k]; ++k) x -= W[k];
-            u = MF_R(1.0) - mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in (0, 1] */
-            /* z = u^(1/q), q = g-1, g-3/2 on (0, 1], g-2, g-5/2 on [1, inf) */
-            lz = mf_max(MF_LOG(u) / (g - MF_R(1.0) - MF_R(0.5) * (mf_real)k), lzmin);
+            for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
+            /* log z = log z_e + kk u log1p(-u s)/(-u s); z_e = 1/4 (terms 0, 1, 3), 4 (2, 4) */
+            lz = (k == 2 || k == 4 ? MF_R(1.3862944) : MF_R(-1.3862944)) +
+                 vs[5 + k] * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * vs[8 + k] : -u);
+            lz = mf_max(lz, lzmin);
             iz = MF_EXP(-lz);                       /* 1/z */
             rho = MF_SQRT(iz);
             b1 = MF_R(1.0) + iz;                    /* b / (g-1) */
-            /* f/e = 1/(1+z) = (1/z)/b1 or z/(1+z) = 1/b1, times (1 + Lambda_b) =
-             * (1 + sqrt(1 + b t^2)) / 2 against its bound */
-            if (mf__stream_next(&st) * (c0 + th * sg * rho) * b1 <
-                (k < 2 ? iz : MF_R(1.0)) * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1 * b1))) {
+            /* f / (z^(g-2) m) = (1/z, 2/sqrt z, 1) / b1 on the three pieces, times
+             * 1 + Lambda_b = (1 + sqrt(1 + b t^2)) / 2 over its bound */
+            n = k < 2 ? iz : k < 4 ? MF_R(2.0) * rho : MF_R(1.0);
+            if (mf__stream_next(&st) * (k < 4 ? c0 + th * sg * rho : c0p) * b1 <
+                n * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
                 m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
                           : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));
@@ -4918,6 +4982,32 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
     if (it < 64) return m;
     return mf__iso_sample_visible_view(d, ax, ay, w, u1, u2);
+}
+
+/* The mixture envelope of mf__student_t_sample_visible (gamma < 2): term j
+ * has the density C_j z^(q_j - 1) on its piece [lo, hi] ((0, 1/4] twice,
+ * [1/4, 4] twice, [4, inf); q = g-1, g-3/2, g-3/2, g-2, g-2; C = 1, 1, 1/2,
+ * 1/2, 1); vs[j] = its mass C_j z_e^q k_j, vs[5 + j] = kk_j = -k_j (q > 0,
+ * z_e = hi) or k_j (q < 0, z_e = lo), k_j = s_j / |q_j|, vs[10], vs[11] =
+ * s_j = -expm1(-|q_j| log 16) of terms 2 and 3 (1 on the others). */
+MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p)
+{
+    mf_real g = p->gamma, ln4 = MF_R(1.3862943611198906);
+    int j;
+    for (j = 0; j < 12; ++j) p->vs[j] = MF_R(0.0);
+    if (!(g < MF_R(2.0))) return;
+    for (j = 0; j < 5; ++j) {
+        mf_real q = g - (j == 0 ? MF_R(1.0) : j < 3 ? MF_R(1.5) : MF_R(2.0)), aq = MF_FABS(q), sj = MF_R(1.0), kj, le, lc;
+        lc = j == 2 || j == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
+        le = j == 2 || j == 4 ? ln4 : -ln4;
+        if (j == 2 || j == 3) {                 /* [1/4, 4]: log(hi/lo) = log 16 */
+            sj = -MF_EXPM1(-aq * MF_R(2.0) * ln4);
+            kj = MF_R(2.0) * ln4 / mf__x_over_expm1(-aq * MF_R(2.0) * ln4);
+            p->vs[8 + j] = sj;
+        } else kj = MF_R(1.0) / aq;
+        p->vs[j] = MF_EXP(lc + q * le) * kj;
+        p->vs[5 + j] = q > MF_R(0.0) ? -kj : kj;
+    }
 }
 /* Index i of the interval [x[i], x[i+1]] holding v (clamped to 0 .. n-2): direct
  * when the nodes are uniform (inv_h > 0), else by bisection. */

@@ -69,8 +69,9 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
 }
 
 /* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) rounded to float and
- * hashed by an integer mixer (xor-shift-multiply rounds), so every sampler
+ * a counter seeded by the bits of the caller's (u1, u2) rounded to float
+ * (u2's multiplied by an odd constant) and hashed by an integer mixer
+ * (xor-shift-multiply rounds), so every sampler
  * stays a function of (u1, u2) and float and double builds draw the same
  * stream (double adds 32 lower bits from a second hash). */
 MF_INLINE unsigned int mf__mix32(unsigned int x)
@@ -87,7 +88,7 @@ MF_INLINE unsigned int mf__float_bits(mf_real x)
 }
 MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
 {
-    return mf__mix32(mf__float_bits(u1) ^ mf__mix32(mf__float_bits(u2) + 0x9e3779b9u));
+    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
 }
 /* the next uniform in [0, 1) */
 MF_INLINE mf_real mf__stream_next(unsigned int *s)
@@ -99,6 +100,15 @@ MF_INLINE mf_real mf__stream_next(unsigned int *s)
     u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
 #endif
     return u;
+}
+
+/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
+ * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
+ * power-law draws (GTR, Student-t) */
+MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
+{
+    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
+    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h). */

@@ -18,8 +18,10 @@ typedef struct mf_ndf_student_t {
     mf_real lbeta;      /* log B(gamma - 1, 1/2) */
     mf_real vndf_p;     /* tail exponent of the numerical VNDF sampler's substitution */
     mf_real vk;         /* gamma > 2: 1/K of the visible sampler's rejection from GGX */
+    mf_real vs[12];     /* gamma < 2: the visible sampler's mixture envelope (mf__student_t_sampler_init) */
 } mf_ndf_student_t;
 /* @api */
+MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p);
 /* Student's t-distribution of slopes (STD), anisotropic. gamma in
  * [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] (clamped). */
 MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
@@ -38,6 +40,7 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
     d.p.student_t.vndf_p = MF_R(2.0) / (MF_R(1.0) - beta);
     /* K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v = 1 */
     d.p.student_t.vk = MF_R(0.25) * MF_EXP(-gamma * MF_LOG(g1 / gamma));
+    mf__student_t_sampler_init(&d.p.student_t);
     return d;
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
@@ -107,10 +110,19 @@ MF_COLD mf_real mf__student_t_tail(const mf_ndf *d, mf_real tan2)
     return MF_EXP(-g1 * MF_LOG1P(tan2 / g1));
 }
 
+/* Normals of density D cos: tan^2 = (g-1)(q^(-1/(g-1)) - 1), q = 1 - t, one
+ * pow where its relative error, about (1 + 1/(g-1)) u w / (w - 1) with
+ * w = q^(-1/(g-1)) (u the unit roundoff), is below 128 u; mf__student_t_tan2
+ * (log1p, expm1) near the pole and at large gamma. */
 MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    return mf__wm_from_slope_u(d->ax, d->ay, mf__student_t_tan2(d, t, MF_R(1.0) - t), u2);
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t, g1 = d->p.student_t.gamma - MF_R(1.0), w, tan2;
+    w = MF_POW(q, MF_R(-1.0) / g1);
+    if (q > MF_R(0.0) && (g1 + MF_R(1.0)) * w <= MF_R(128.0) * g1 * (w - MF_R(1.0)))
+        tan2 = mf_min(g1 * (w - MF_R(1.0)), MF_BIG);
+    else
+        tan2 = mf__student_t_tan2(d, t, q);
+    return mf__wm_from_slope_u(d->ax, d->ay, tan2, u2);
 }
 
 /* Visible normals, exact, in the space stretched to unit roughness, where
@@ -124,10 +136,12 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  *   the density is the mixture over z = B/(1-B) in (0, inf) of GGX densities
  *   of alpha_b^2 = b = (g-1)(1 + z)/z with weight f(z) = z^(g-2) / (1 + z).
  *   As for GTR (mf__gtr_sample_visible), b with weight f (1 + Lambda_b(w)),
- *   then b's GGX VNDF; z by rejection from f <= z^(g-2), z^(g-3) on (0, 1],
- *   [1, inf) times 1 + Lambda_b <= 1 + Lambda_{g-1} + (t/2) sqrt(g-1) z^-1/2
- *   (sqrt(x + y) <= sqrt x + sqrt y): four
- *   power laws (integrable because g > 3/2). Components beyond
+ *   then b's GGX VNDF; z by rejection from f <= z^(g-2) m(z), m = min(1,
+ *   1/(2 sqrt z), 1/z) >= 1/(1 + z) (AM-GM, within 4/5; pieces split at 1/4
+ *   and 4), times 1 + Lambda_b <= 1 + Lambda_{g-1} + (t/2) sqrt(g-1) z^-1/2
+ *   (sqrt(x + y) <= sqrt x + sqrt y) up to 4, its value at b = 5(g-1)/4
+ *   beyond: five power laws (integrable because g > 3/2), each inverted in
+ *   closed form (mf__student_t_sampler_init). Components beyond
  *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
  *   that b.
  * Further draws come from mf__stream_next; after 64 rejections (probability
@@ -155,26 +169,31 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (mf__stream_next(&st) < r) break;
         }
     } else {
-        mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, c0, W[4], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
+        const mf_real *vs = d->p.student_t.vs;
+        mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, t4, c0, c0p, W[5], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
         th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
-        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1));   /* 1 + Lambda at b = g - 1 */
-        W[0] = c0 / g1; W[1] = th * sg / (g - MF_R(1.5));
-        W[2] = c0 / (MF_R(2.0) - g); W[3] = th * sg / (MF_R(2.5) - g);
-        tot = W[0] + W[1] + W[2] + W[3];
+        t4 = MF_R(4.0) * th * th * g1;
+        c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4));                /* 1 + Lambda at b = g - 1 */
+        c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4));  /* at b = 5(g - 1)/4 */
+        W[0] = c0 * vs[0]; W[1] = th * sg * vs[1]; W[2] = c0 * vs[2]; W[3] = th * sg * vs[3]; W[4] = c0p * vs[4];
+        tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
-            mf_real x = mf__stream_next(&st) * tot, u, lz, iz, rho, b1;
+            /* the term from one uniform, the place in it from the next (in [0, 1)) */
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n;
             int k;
-            for (k = 0; k < 3 && x >= W[k]; ++k) x -= W[k];
-            u = MF_R(1.0) - mf_min(x / W[k], MF_R(1.0) - MF_EPS);   /* the rest of the draw, in (0, 1] */
-            /* z = u^(1/q), q = g-1, g-3/2 on (0, 1], g-2, g-5/2 on [1, inf) */
-            lz = mf_max(MF_LOG(u) / (g - MF_R(1.0) - MF_R(0.5) * (mf_real)k), lzmin);
+            for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
+            /* log z = log z_e + kk u log1p(-u s)/(-u s); z_e = 1/4 (terms 0, 1, 3), 4 (2, 4) */
+            lz = (k == 2 || k == 4 ? MF_R(1.3862944) : MF_R(-1.3862944)) +
+                 vs[5 + k] * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * vs[8 + k] : -u);
+            lz = mf_max(lz, lzmin);
             iz = MF_EXP(-lz);                       /* 1/z */
             rho = MF_SQRT(iz);
             b1 = MF_R(1.0) + iz;                    /* b / (g-1) */
-            /* f/e = 1/(1+z) = (1/z)/b1 or z/(1+z) = 1/b1, times (1 + Lambda_b) =
-             * (1 + sqrt(1 + b t^2)) / 2 against its bound */
-            if (mf__stream_next(&st) * (c0 + th * sg * rho) * b1 <
-                (k < 2 ? iz : MF_R(1.0)) * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(4.0) * th * th * g1 * b1))) {
+            /* f / (z^(g-2) m) = (1/z, 2/sqrt z, 1) / b1 on the three pieces, times
+             * 1 + Lambda_b = (1 + sqrt(1 + b t^2)) / 2 over its bound */
+            n = k < 2 ? iz : k < 4 ? MF_R(2.0) * rho : MF_R(1.0);
+            if (mf__stream_next(&st) * (k < 4 ? c0 + th * sg * rho : c0p) * b1 <
+                n * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
                 m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
                           : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));
@@ -186,4 +205,30 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     MF__SOLVER_DONE(MF__SITE_REJECT, it, 64);
     if (it < 64) return m;
     return mf__iso_sample_visible_view(d, ax, ay, w, u1, u2);
+}
+
+/* The mixture envelope of mf__student_t_sample_visible (gamma < 2): term j
+ * has the density C_j z^(q_j - 1) on its piece [lo, hi] ((0, 1/4] twice,
+ * [1/4, 4] twice, [4, inf); q = g-1, g-3/2, g-3/2, g-2, g-2; C = 1, 1, 1/2,
+ * 1/2, 1); vs[j] = its mass C_j z_e^q k_j, vs[5 + j] = kk_j = -k_j (q > 0,
+ * z_e = hi) or k_j (q < 0, z_e = lo), k_j = s_j / |q_j|, vs[10], vs[11] =
+ * s_j = -expm1(-|q_j| log 16) of terms 2 and 3 (1 on the others). */
+MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p)
+{
+    mf_real g = p->gamma, ln4 = MF_R(1.3862943611198906);
+    int j;
+    for (j = 0; j < 12; ++j) p->vs[j] = MF_R(0.0);
+    if (!(g < MF_R(2.0))) return;
+    for (j = 0; j < 5; ++j) {
+        mf_real q = g - (j == 0 ? MF_R(1.0) : j < 3 ? MF_R(1.5) : MF_R(2.0)), aq = MF_FABS(q), sj = MF_R(1.0), kj, le, lc;
+        lc = j == 2 || j == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
+        le = j == 2 || j == 4 ? ln4 : -ln4;
+        if (j == 2 || j == 3) {                 /* [1/4, 4]: log(hi/lo) = log 16 */
+            sj = -MF_EXPM1(-aq * MF_R(2.0) * ln4);
+            kj = MF_R(2.0) * ln4 / mf__x_over_expm1(-aq * MF_R(2.0) * ln4);
+            p->vs[8 + j] = sj;
+        } else kj = MF_R(1.0) / aq;
+        p->vs[j] = MF_EXP(lc + q * le) * kj;
+        p->vs[5 + j] = q > MF_R(0.0) ? -kj : kj;
+    }
 }

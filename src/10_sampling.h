@@ -11,10 +11,11 @@
  *             slope along the view from its CDF (safeguarded Newton on erf),
  *             the other slope from erfinv. The CDF is scaled by tan(theta), so
  *             normal incidence (cot = infinity) and tiny alpha are exact.
- *   GTR, Student-t  exact numerical inversion (see mf__iso_sample_visible):
- *             64 evaluations (32 in float builds) of the inverse NDF CDF per
- *             sample, no rejection, deterministic; about 50-100x the cost of
- *             GGX (see make bench). */
+ *   GTR, Student-t  exact rejection from GGX's VNDF or from an exact
+ *             mixture of GGX lobes (mf__gtr_sample_visible,
+ *             mf__student_t_sample_visible), the exact numerical inversion
+ *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
+ *             closed-form inverse CDF. */
 
 /* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
 MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
