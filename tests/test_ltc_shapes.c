@@ -378,8 +378,13 @@ static void test_lines(mft_rng *r)
     MFT_CHECK(wl < 2.5e-3, msg);
     snprintf(msg, sizeof msg, "tube light vs quadrature over the closed cylinder above the horizon (r/L 1e-3, second order): worst rel %.2g < 1e-5", wt);
     MFT_CHECK(wt < MFT_TOL(1e-5, 2e-4), msg);
-    snprintf(msg, sizeof msg, "tube light crossing the horizon (r/L 1e-3, first order at the cut): worst rel %.2g < 2e-3", wc);
-    MFT_CHECK(wc < 2e-3, msg);
+    snprintf(msg, sizeof msg, "tube light vs the closed cylinder above the horizon at r/L 1e-2: worst rel %.2g < 4e-4", wl2);
+    MFT_CHECK(wl2 < 4e-4, msg);
+    /* crossing the horizon: measured 5.8e-5 at r/L 1e-3, 5.4e-3 at 1e-2 (about
+     * second order, a constant 13-27x that above the horizon: the straight cut
+     * of the strip at the horizon) */
+    snprintf(msg, sizeof msg, "tube light crossing the horizon (r/L 1e-3 and 1e-2): worst rel %.2g < 1.2e-4, %.2g < 1e-2", wc, wc2);
+    MFT_CHECK(wc < 1.2e-4 && wc2 < 1e-2, msg);
     {   /* a long line parallel to the surface at height 1: 2r / (2h) per unit width */
         const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
         mf_ltc l = mf_ltc_from_matrix9(I9);
