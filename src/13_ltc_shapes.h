@@ -159,6 +159,7 @@ MF__LTC_RARE mf_real mf__ellipse_clipped(mf_vec3 c, mf_vec3 u, mf_vec3 v)
     A = MF_R(1.0) + t1 * t1;
     if (!(t1 > MF_R(0.0))) return MF_R(0.0);
     t2 = MF_SQRT(pm[7] / (-pm[6] * pm[6] * pm[6])) / t1;
+    if (!(t2 < t1)) t2 = t1;   /* rounding (t2 <= t1), or an underflow of p3^3 */
     B = MF_R(1.0) + t2 * t2;
     /* visible where Q.z = a.z + R cos(f - ph) > 0 */
     X = t1 * e1.z; Y = t2 * e2.z;

@@ -565,7 +565,7 @@ static void test_precisions(mft_rng *r)
     printf("    float vs double, 200 random shapes and matrices: ellipse %.2g, clipped ellipse %.2g, line %.2g, tube %.2g\n",
            worst[0], worst[1], worst[2], worst[3]);
     snprintf(msg, sizeof msg, "LTC shapes: float and double agree (worst rel %.2g %.2g %.2g %.2g)", worst[0], worst[1], worst[2], worst[3]);
-    MFT_CHECK(worst[0] < 1e-4 && worst[1] < 1e-4 && worst[2] < 5e-4 && worst[3] < 5e-4, msg);
+    MFT_CHECK(worst[0] < 1e-4 && worst[1] < 5e-5 && worst[2] < 5e-4 && worst[3] < 5e-4, msg);   /* measured 6.1e-6 1.5e-5 4.9e-5 5e-5 */
 }
 
 void test_ltc_shapes(void)
