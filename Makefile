@@ -52,7 +52,7 @@ header-check:
 	  { echo "microfacet.h differs from src/: edit src/, run 'make header', commit both"; exit 1; }
 
 # the built-in LTC table modules, refitted (GGX with its refinement on
-# polygons 253 s, Beckmann 264 s here; ltc-table-ggx and ltc-table-beckmann
+# polygons 259 s CPU, Beckmann 264 s here; ltc-table-ggx and ltc-table-beckmann
 # refit one); they reproduce src/14_ltc_table.h and
 # src/14_ltc_table_beckmann.h byte for byte
 ltc-table: ltc-table-ggx ltc-table-beckmann

@@ -13,7 +13,7 @@
  * (measured 0.16; Eq. 7 was fitted to the whole lobe). The built-in GGX
  * table against Monte Carlo of the true BRDF cos over quads near and beside
  * the mirror direction, 5 roughnesses x 4 view angles: mean relative error
- * below 0.06 (measured 0.046), max below 0.4 (measured 0.315 at theta_o = 81
+ * below 0.06 (measured 0.046), max below 0.35 (measured 0.284 at theta_o = 81
  * degrees, where the LTC lobe spills below the true horizon). */
 #include "mf_test.h"
 #include "quad.h"
@@ -22,7 +22,7 @@
 
 static const double PI_D = 3.14159265358979323846;
 #define MFT_LTC_MEAN_TOL 0.06  /* measured 0.046 */
-#define MFT_LTC_MAX_TOL 0.4    /* measured 0.315, at theta_o = 81 deg */
+#define MFT_LTC_MAX_TOL 0.35   /* measured 0.284, at theta_o = 81 deg */
 
 static mf_ltc random_ltc(mft_rng *r, double spread)
 {
@@ -837,13 +837,13 @@ static void test_broad_lights(void)
 {
     static broad_light ls[512];
     /* bounds slightly above the measured values (see the printed lines) */
-    /* measured (float and double alike): mean 0.1948, near 0.0564, away 0.3331;
-     * bands (views x alpha) 0.447 0.511 0.125 / 0.261 0.147 0.059 / 0.088 0.111 0.032.
+    /* measured (float and double alike): mean 0.1961, near 0.0310, away 0.3611;
+     * bands (views x alpha) 0.428 0.450 0.164 / 0.243 0.192 0.083 / 0.095 0.117 0.028.
      * The published table (Heitz et al. 2016, ltc_code) measured on the same
      * lights outside this project: mean 0.2857, near 0.0609, away 0.5105; the
      * plain fit (mf_ltc_table_build): 0.2858, 0.0619, 0.5097 */
-    static const double band_tol[3][3] = { { 0.46, 0.525, 0.13 }, { 0.27, 0.152, 0.062 }, { 0.092, 0.115, 0.034 } };
-    const double mean_tol = 0.20, near_tol = 0.06, off_tol = 0.34;
+    static const double band_tol[3][3] = { { 0.44, 0.465, 0.17 }, { 0.25, 0.198, 0.086 }, { 0.098, 0.12, 0.03 } };
+    const double mean_tol = 0.20, near_tol = 0.033, off_tol = 0.37;
     double sum = 0, sn = 0, so = 0, band[3][3] = { { 0 } };
     int cnt[3][3] = { { 0 } }, n = broad_lights(ls), i, a, v, nn = 0;
     char msg[200];
@@ -925,11 +925,11 @@ static void test_ggx_refined(void)
            e_ship[1] / cnt[1], e_fit[1] / cnt[1], e_ship[0] / cnt[0], e_fit[0] / cnt[0], cnt[1], cnt[0]);
     snprintf(msg, sizeof msg, "refined GGX entries beat the plain fit on squares (all %.4f vs %.4f, away %.4f vs %.4f)",
              (e_ship[0] + e_ship[1]) / (cnt[0] + cnt[1]), (e_fit[0] + e_fit[1]) / (cnt[0] + cnt[1]), e_ship[0] / cnt[0], e_fit[0] / cnt[0]);
-    /* measured: all 0.49 of the plain fit's error (float 0.50), away 0.61 (float 0.63) */
+    /* measured: all 0.57 of the plain fit's error (float 0.59), away 0.71 (float 0.75) */
     MFT_CHECK(cnt[0] > 40 && cnt[1] > 50 && e_ship[0] + e_ship[1] < 0.8 * (e_fit[0] + e_fit[1]) && e_ship[0] < 0.8 * e_fit[0], msg);
     snprintf(msg, sizeof msg, "refined GGX entries stay close to the true lobe around the mirror direction (%.4f, plain fit %.4f)",
              e_ship[1] / cnt[1], e_fit[1] / cnt[1]);
-    MFT_CHECK(e_ship[1] / cnt[1] < 0.03, msg);   /* measured 0.020 */
+    MFT_CHECK(e_ship[1] / cnt[1] < 0.03, msg);   /* measured 0.024 */
 }
 
 /* The built-in Beckmann table (tools/ltc_fit.c --module beckmann): the same

@@ -7,7 +7,8 @@
  *     1e-9 (double, measured 1.4e-12) / 5e-6 (float, measured 5.1e-7); disks
  *     parallel to the surface against their closed form; the 256-gon;
  *   ellipses crossing the horizon: the sphere approximation's error, stated
- *     and bounded (see MFT_ELL_CLIP_*), and the exact clipping (2e-4 of |F|);
+ *     and bounded (see MFT_ELL_CLIP_*), and the exact clipping (closed form:
+ *     1e-12 of |F| against Stokes along the arc in the ellipse's parameter);
  *   lines: first order in radius / length against the lateral surface of the
  *     cylinder; tubes (line + half caps): second order against the closed
  *     cylinder;
@@ -22,7 +23,7 @@
 static const double PI_S = 3.14159265358979323846;
 #define MFT_ELL_CLIP_MEAN 0.02   /* measured 0.013 (error / |F|) */
 #define MFT_ELL_CLIP_MAX 0.1     /* measured 0.073 */
-#define MFT_TEX_MEAN 0.08        /* measured 0.042 (uv units) */
+#define MFT_TEX_MEAN 0.03        /* measured 0.011 (uv units) */
 
 static mf_vec3 v3(double x, double y, double z) { return mf_vec3_make((mf_real)x, (mf_real)y, (mf_real)z); }
 
@@ -50,6 +51,34 @@ static double ellipse_quad(const mf_ltc *l, mf_vec3 c, mf_vec3 u, mf_vec3 v, int
                 }
         }
     return s;
+}
+
+/* the cosine form factor of the cone through the ellipse c + u cos t + v sin t
+ * above the horizon, by Stokes in the ellipse's own parameter t (not the
+ * cone's principal frame the library uses): (1 / 2 pi) times the integral of
+ * (P x P').z / |P|^2 over the visible t (composite 16-point Gauss-Legendre,
+ * np panels) plus the horizon arc's angle, in double */
+static double clip_arc_ref(mf_vec3 cr, mf_vec3 ur, mf_vec3 vr, int np)
+{
+    double c[3] = { cr.x, cr.y, cr.z }, u[3] = { ur.x, ur.y, ur.z }, v[3] = { vr.x, vr.y, vr.z };
+    double R = sqrt(u[2] * u[2] + v[2] * v[2]), ph = atan2(v[2], u[2]), al, h, s = 0, x0[3], x1[3];
+    double A = u[0] * v[1] - u[1] * v[0], B = c[0] * v[1] - c[1] * v[0], C = -(c[0] * u[1] - c[1] * u[0]);
+    int p, i, k;
+    if (!(R > fabs(c[2]))) return c[2] > 0 ? -1.0 : 0.0;
+    al = acos(-c[2] / R);
+    h = 2 * al / np;
+    for (p = 0; p < np; ++p)
+        for (i = 0; i < 16; ++i) {
+            double t = ph - al + h * (p + gx16[i]), cs = cos(t), sn = sin(t), P2 = 0;
+            for (k = 0; k < 3; ++k) P2 += (c[k] + u[k] * cs + v[k] * sn) * (c[k] + u[k] * cs + v[k] * sn);
+            s += gw16[i] * h * (A + B * cs + C * sn) / P2;
+        }
+    for (k = 0; k < 3; ++k) {
+        x1[k] = c[k] + u[k] * cos(ph + al) + v[k] * sin(ph + al);
+        x0[k] = c[k] + u[k] * cos(ph - al) + v[k] * sin(ph - al);
+    }
+    s += atan2(x1[0] * x0[1] - x1[1] * x0[0], x1[0] * x0[0] + x1[1] * x0[1]);
+    return fabs(s) / (2 * PI_S);
 }
 
 /* the lateral surface (visible part) of the cylinder of radius r along p1 p2,
@@ -139,8 +168,8 @@ static int ellipse_above(const mf_ltc *l, mf_vec3 c, mf_vec3 u, mf_vec3 v)
 static void test_ellipses(mft_rng *r)
 {
     char msg[200];
-    double worst = 0, cw = 0, cm = 0, xw = 0, xm = 0;
-    int k, n_above = 0, n_clip = 0, tries;
+    double worst = 0, cw = 0, cm = 0, xw = 0, xm = 0, aw = 0;
+    int k, n_above = 0, n_clip = 0, tries, arc_conv = 1;
     /* exact above the horizon; the horizon approximation across it */
     for (tries = 0; tries < 400 && (n_above < 24 || n_clip < 24); ++tries) {
         mf_ltc l = shape_ltc(r, tries % 6);
@@ -176,10 +205,13 @@ static void test_ellipses(mft_rng *r)
             F = mf_ellipse_vector_form_factor(cc, uu, vv);
             want = ellipse_quad(&l, c, u, v, 1, 24, 48);
             e = fabs(got - want) / sqrt((double)mf_dot(F, F));
-            {   /* the exact clipping (Stokes along the visible arc) */
-                double ex = fabs((double)mf_ltc_integrate_ellipse_clipped(&l, c, u, v, 1) - want) / sqrt((double)mf_dot(F, F));
+            {   /* the exact clipping against the area quadrature and against Stokes along the arc */
+                double cl = (double)mf_ltc_integrate_ellipse_clipped(&l, c, u, v, 1), ex = fabs(cl - want) / sqrt((double)mf_dot(F, F));
+                double ar = clip_arc_ref(cc, uu, vv, 64), ea = fabs(cl - ar) / sqrt((double)mf_dot(F, F));
                 xm += ex;
                 if (ex > xw) xw = ex;
+                if (fabs(ar - clip_arc_ref(cc, uu, vv, 128)) > 1e-13 * sqrt((double)mf_dot(F, F))) arc_conv = 0;
+                if (ea > aw) aw = ea;
             }
             if (mft_verbose) printf("    clipped ellipse: LTC %.5f exact clipping %.5f quadrature %.5f (|F| %.4f)\n", got,
                                     (double)mf_ltc_integrate_ellipse_clipped(&l, c, u, v, 1), want, sqrt((double)mf_dot(F, F)));
@@ -196,11 +228,16 @@ static void test_ellipses(mft_rng *r)
     snprintf(msg, sizeof msg, "ellipses across the horizon: sphere approximation error / |F| mean %.4f < %.2f, max %.4f < %.2f", cm, MFT_ELL_CLIP_MEAN, cw, MFT_ELL_CLIP_MAX);
     MFT_CHECK(n_clip == 24 && cm < MFT_ELL_CLIP_MEAN && cw < MFT_ELL_CLIP_MAX, msg);
     xm /= n_clip > 0 ? n_clip : 1;
-    printf("    the same, exact clipping (mf_ltc_integrate_ellipse_clipped): mean %.2g, max %.2g\n", xm, xw);
-    /* mean 8.4e-5, max 1.9e-3 with the GGX table refined on polygons (its
-     * sharper lobes strain the 32-point rule along the arc; 4.4e-6 before) */
-    snprintf(msg, sizeof msg, "ellipses across the horizon, exact clipping: error / |F| mean %.2g < 2e-4, max %.2g < 2.5e-3", xm, xw);
-    MFT_CHECK(xm < 2e-4 && xw < 2.5e-3, msg);
+    printf("    the same, exact clipping (mf_ltc_integrate_ellipse_clipped): mean %.2g, max %.2g; against Stokes along the arc max %.2g\n", xm, xw, aw);
+    /* closed form: measured mean 1.4e-8, max 8.2e-8 against the area quadrature
+     * (its own error: the cut along the horizon), 1.1e-14 against the arc
+     * integral (its 64 and 128 panels agree to 1e-13); float: mean 2e-7, max
+     * 2.6e-6 */
+    snprintf(msg, sizeof msg, "ellipses across the horizon, exact clipping vs area quadrature: error / |F| mean %.2g < %.0e, max %.2g < %.0e", xm,
+             MFT_TOL(5e-8, 1e-6), xw, MFT_TOL(3e-7, 1e-5));
+    MFT_CHECK(xm < MFT_TOL(5e-8, 1e-6) && xw < MFT_TOL(3e-7, 1e-5), msg);
+    snprintf(msg, sizeof msg, "ellipses across the horizon, exact clipping vs Stokes along the arc: error / |F| max %.2g < %.0e", aw, MFT_TOL(1e-12, 1e-5));
+    MFT_CHECK(arc_conv && aw < MFT_TOL(1e-12, 1e-5), msg);
 
     /* disks parallel to the surface: F = (1 - (h^2 + a^2 - R^2) / sqrt((h^2 + a^2 + R^2)^2 - 4 a^2 R^2)) / 2 */
     {
@@ -300,10 +337,11 @@ static void test_true_brdf(void)
         }
     sd /= n; st /= n;
     printf("    GGX BRDF cos by quadrature vs LTC table: disk mean rel %.3f (max %.3f), tube mean %.3f (max %.3f), %d configurations\n", sd, md, st, mt, n);
-    /* the GGX table refined on square lights raised the grazing (cos 0.3)
-     * errors here: disk max 0.364, tube 0.296 (the plain fit: 0.074, 0.090) */
-    snprintf(msg, sizeof msg, "true GGX over disks and tubes near the lobe: mean rel error %.3f, %.3f < 0.1, max %.3f, %.3f < 0.4", sd, st, md, mt);
-    MFT_CHECK(sd < 0.1 && st < 0.1 && md < 0.4 && mt < 0.4, msg);
+    /* measured disk mean 0.028, max 0.079, tube 0.043, 0.070 (the plain L3
+     * fit: 0.029 / 0.074, 0.032 / 0.090; refined on squares alone, without the
+     * guard on lights near the lobe: max 0.364 / 0.296 at cos 0.3) */
+    snprintf(msg, sizeof msg, "true GGX over disks and tubes near the lobe: mean rel error %.3f < 0.04, %.3f < 0.055, max %.3f, %.3f < 0.1", sd, st, md, mt);
+    MFT_CHECK(sd < 0.04 && st < 0.055 && md < 0.1 && mt < 0.1, msg);
 }
 
 static void test_lines(mft_rng *r)
@@ -341,8 +379,13 @@ static void test_lines(mft_rng *r)
     MFT_CHECK(wl < 2.5e-3, msg);
     snprintf(msg, sizeof msg, "tube light vs quadrature over the closed cylinder above the horizon (r/L 1e-3, second order): worst rel %.2g < 1e-5", wt);
     MFT_CHECK(wt < MFT_TOL(1e-5, 2e-4), msg);
-    snprintf(msg, sizeof msg, "tube light crossing the horizon (r/L 1e-3, first order at the cut): worst rel %.2g < 2e-3", wc);
-    MFT_CHECK(wc < 2e-3, msg);
+    snprintf(msg, sizeof msg, "tube light vs the closed cylinder above the horizon at r/L 1e-2: worst rel %.2g < 8e-4", wl2);
+    MFT_CHECK(wl2 < 8e-4, msg);   /* measured 5.4e-4 */
+    /* crossing the horizon: measured 2.5e-5 at r/L 1e-3, 2.5e-3 at 1e-2 (about
+     * second order, a constant 5x that above the horizon: the straight cut of
+     * the strip at the horizon) */
+    snprintf(msg, sizeof msg, "tube light crossing the horizon (r/L 1e-3 and 1e-2): worst rel %.2g < 5e-5, %.2g < 5e-3", wc, wc2);
+    MFT_CHECK(wc < 5e-5 && wc2 < 5e-3, msg);
     {   /* a long line parallel to the surface at height 1: 2r / (2h) per unit width */
         const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
         mf_ltc l = mf_ltc_from_matrix9(I9);
@@ -522,7 +565,7 @@ static void test_precisions(mft_rng *r)
     printf("    float vs double, 200 random shapes and matrices: ellipse %.2g, clipped ellipse %.2g, line %.2g, tube %.2g\n",
            worst[0], worst[1], worst[2], worst[3]);
     snprintf(msg, sizeof msg, "LTC shapes: float and double agree (worst rel %.2g %.2g %.2g %.2g)", worst[0], worst[1], worst[2], worst[3]);
-    MFT_CHECK(worst[0] < 1e-4 && worst[1] < 1e-4 && worst[2] < 5e-4 && worst[3] < 5e-4, msg);
+    MFT_CHECK(worst[0] < 1e-4 && worst[1] < 5e-5 && worst[2] < 5e-4 && worst[3] < 5e-4, msg);   /* measured 6.1e-6 1.5e-5 4.9e-5 5e-5 */
 }
 
 void test_ltc_shapes(void)
