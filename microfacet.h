@@ -4680,9 +4680,9 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             m = mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
         }
     } else {
-        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
-        th = sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
-        t4 = MF_R(4.0) * th * th;
+        mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
+        t4 = s2 < w.z * w.z / (MF_EPS * MF_EPS) ? s2 / (w.z * w.z) : MF_R(1.0) / (MF_EPS * MF_EPS);   /* t^2 */
+        th = MF_R(0.5) * MF_SQRT(t4);                                                  /* t/2, off the c0 path */
         /* 1 + Lambda_b at b = a^2, 5a^2/4 and 1 */
         c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * a2));
         c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4 * a2));
@@ -4997,8 +4997,9 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     } else {
         const mf_real *vs = d->p.student_t.vs;
         mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, t4, c0, c0p, W[5], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
-        th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
-        t4 = MF_R(4.0) * th * th * g1;
+        a2t2 = mf_min(a2t2, MF_R(1.0) / (MF_EPS * MF_EPS));
+        th = MF_R(0.5) * MF_SQRT(a2t2);                                        /* t/2 */
+        t4 = a2t2 * g1;                                                        /* (t/2)^2 4 (g-1), not through th */
         c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4));                /* 1 + Lambda at b = g - 1 */
         c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4));  /* at b = 5(g - 1)/4 */
         W[0] = c0 * vs[0]; W[1] = th * sg * vs[1]; W[2] = c0 * vs[2]; W[3] = th * sg * vs[3]; W[4] = c0p * vs[4];

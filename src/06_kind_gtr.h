@@ -386,9 +386,9 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             m = mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
         }
     } else {
-        mf_real sw = MF_SQRT(w.x * w.x + w.y * w.y), th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
-        th = sw < w.z / MF_EPS ? MF_R(0.5) * sw / w.z : MF_R(0.5) / MF_EPS;   /* t/2 */
-        t4 = MF_R(4.0) * th * th;
+        mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
+        t4 = s2 < w.z * w.z / (MF_EPS * MF_EPS) ? s2 / (w.z * w.z) : MF_R(1.0) / (MF_EPS * MF_EPS);   /* t^2 */
+        th = MF_R(0.5) * MF_SQRT(t4);                                                  /* t/2, off the c0 path */
         /* 1 + Lambda_b at b = a^2, 5a^2/4 and 1 */
         c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * a2));
         c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4 * a2));

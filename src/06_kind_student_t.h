@@ -171,8 +171,9 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     } else {
         const mf_real *vs = d->p.student_t.vs;
         mf_real a2t2 = mf__a2t2(ax, ay, w), sg = MF_SQRT(g1), th, t4, c0, c0p, W[5], tot, lzmin = MF_R(2.0) * MF_LOG(MF_EPS);
-        th = a2t2 < MF_R(1.0) / (MF_EPS * MF_EPS) ? MF_R(0.5) * MF_SQRT(a2t2) : MF_R(0.5) / MF_EPS;   /* t/2 */
-        t4 = MF_R(4.0) * th * th * g1;
+        a2t2 = mf_min(a2t2, MF_R(1.0) / (MF_EPS * MF_EPS));
+        th = MF_R(0.5) * MF_SQRT(a2t2);                                        /* t/2 */
+        t4 = a2t2 * g1;                                                        /* (t/2)^2 4 (g-1), not through th */
         c0 = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4));                /* 1 + Lambda at b = g - 1 */
         c0p = MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + MF_R(1.25) * t4));  /* at b = 5(g - 1)/4 */
         W[0] = c0 * vs[0]; W[1] = th * sg * vs[1]; W[2] = c0 * vs[2]; W[3] = th * sg * vs[3]; W[4] = c0p * vs[4];
