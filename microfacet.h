@@ -208,11 +208,11 @@
  *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
  *          mixture of GGX, gamma-3 or gamma-4 GTR, built by mf_gtr with 4-24
- *          nodes as alpha falls; 4.2-16.5x GGX's Lambda in float: mf_ndf is
+ *          nodes as alpha falls; 4.7-18.4x GGX's Lambda in float: mf_ndf is
  *          larger, 376 bytes in float, 720 in double); GTR and Student-t NDF
- *          sampling by the closed-form inverse CDF with one pow (1.8-2.5x
+ *          sampling by the closed-form inverse CDF with one pow (1.5-2.2x
  *          GGX), visible normals by exact rejection from GGX and from exact
- *          GGX mixtures (2.5-5.3x GGX; was 115-160); no lost samples at
+ *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at
  *          grazing views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
  *          middle entry (the published texture layout: the raw data of
@@ -4466,8 +4466,9 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * 1D integral of the slope density (tests/test_ndf.c, 20 alphas 1e-4..1,
  * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 1.8e-6
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
- * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.2-16.5x
- * GGX's Lambda from alpha 0.3 to 1e-4 (double 6-24x); building the rule
+ * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.7-18.4x
+ * GGX's Lambda from alpha 0.3 to 1e-4 (double 5-37x: its square roots stay
+ * scalar where sqrt may set errno; 4-24x with -fno-math-errno); building the rule
  * makes mf_gtr at non-integer gamma cost about 1 us (Golub-Welsch; integer
  * gamma costs nothing). tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so
  * float never overflows. */

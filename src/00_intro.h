@@ -199,11 +199,11 @@
  *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
  *          mixture of GGX, gamma-3 or gamma-4 GTR, built by mf_gtr with 4-24
- *          nodes as alpha falls; 4.2-16.5x GGX's Lambda in float: mf_ndf is
+ *          nodes as alpha falls; 4.7-18.4x GGX's Lambda in float: mf_ndf is
  *          larger, 376 bytes in float, 720 in double); GTR and Student-t NDF
- *          sampling by the closed-form inverse CDF with one pow (1.8-2.5x
+ *          sampling by the closed-form inverse CDF with one pow (1.5-2.2x
  *          GGX), visible normals by exact rejection from GGX and from exact
- *          GGX mixtures (2.5-5.3x GGX; was 115-160); no lost samples at
+ *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at
  *          grazing views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
  *          middle entry (the published texture layout: the raw data of

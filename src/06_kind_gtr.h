@@ -172,8 +172,9 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * 1D integral of the slope density (tests/test_ndf.c, 20 alphas 1e-4..1,
  * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 1.8e-6
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
- * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.2-16.5x
- * GGX's Lambda from alpha 0.3 to 1e-4 (double 6-24x); building the rule
+ * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.7-18.4x
+ * GGX's Lambda from alpha 0.3 to 1e-4 (double 5-37x: its square roots stay
+ * scalar where sqrt may set errno; 4-24x with -fno-math-errno); building the rule
  * makes mf_gtr at non-integer gamma cost about 1 us (Golub-Welsch; integer
  * gamma costs nothing). tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so
  * float never overflows. */
