@@ -215,9 +215,11 @@
  *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at
  *          grazing views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
- *          middle entry (the published texture layout: the raw data of
+ *          middle entry (the published normalization: the raw data of
  *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed
- *          meaning), mf_ltc_table_export_rgba16f. MF_FORCE_INLINE on the hot
+ *          meaning), mf_ltc_table_export_rgba16f (the published ltc_1 and
+ *          ltc_2 textures in ltc_code's layout and channel order, the
+ *          horizon-clipped sphere table in ltc_2.w). MF_FORCE_INLINE on the hot
  *          paths; Beckmann visible normals in closed form at normal
  *          incidence; faster IBM queries; MF_FAST_MATH; solver iteration
  *          caps reported to tests (MF__SOLVER_DONE).
@@ -3138,20 +3140,25 @@ MF_INLINE mf_vec3 mf_polygon_vector_form_factor(const mf_vec3 *verts, int n)
  * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
  * disk, it is the sphere approximation of their horizon-clipped form factor
  * (Hill & Heitz 2016). */
-MF_INLINE mf_real mf_sphere_form_factor(mf_vec3 F)
+/* the same from co = cos omega in [-1, 1], s2 = sin^2 sigma in (0, 1] and
+ * x = cot sigma */
+MF_INLINE mf_real mf__sphere_form_factor_cs(mf_real co, mf_real s2, mf_real x)
 {
-    mf_real len = MF_SQRT(mf_dot(F, F)), s2, co, so, x, y, z;
-    if (!(len > MF_R(0.0))) return MF_R(0.0);
-    s2 = mf_min(len, MF_R(1.0));                 /* sin^2 sigma */
-    co = mf_clamp(F.z / len, MF_R(-1.0), MF_R(1.0));
-    so = MF_SQRT(MF_R(1.0) - co * co);
-    x = MF_SQRT(mf_max(MF_R(1.0) / s2 - MF_R(1.0), MF_R(0.0)));  /* cot sigma */
+    mf_real so = MF_SQRT(MF_R(1.0) - co * co), y, z;
     if (co >= MF_SQRT(s2)) return co * s2;      /* omega <= pi/2 - sigma: fully above */
     if (co <= -MF_SQRT(s2)) return MF_R(0.0);    /* omega >= pi/2 + sigma: fully below */
     y = so > MF_R(0.0) ? -x * co / so : MF_R(0.0);
     y = mf_clamp(y, MF_R(-1.0), MF_R(1.0));
     z = so * MF_SQRT(MF_R(1.0) - y * y);
     return mf_max(((co * MF_ACOS(y) - x * z) * s2 + MF_ATAN2(z, x)) * MF_INV_PI, MF_R(0.0));
+}
+MF_INLINE mf_real mf_sphere_form_factor(mf_vec3 F)
+{
+    mf_real len = MF_SQRT(mf_dot(F, F)), s2;
+    if (!(len > MF_R(0.0))) return MF_R(0.0);
+    s2 = mf_min(len, MF_R(1.0));                 /* sin^2 sigma */
+    return mf__sphere_form_factor_cs(mf_clamp(F.z / len, MF_R(-1.0), MF_R(1.0)), s2,
+                                     MF_SQRT(mf_max(MF_R(1.0) / s2 - MF_R(1.0), MF_R(0.0))));  /* cot sigma */
 }
 
 /* Multi-scale roughness (Tao et al. 2021). The meso-scale normals of a
@@ -3221,17 +3228,37 @@ MFDEF mf_ltc mf_ltc_table_lookup(const mf_ltc_table *t, mf_real cos_theta_o, mf_
 
 /* Export of a table (mf_ltc_table.data, mf_ltc_ggx_table, n_theta x n_alpha
  * entries of six floats) as the two RGBA half-float (IEEE binary16) textures
- * of the published shaders: texel (column i = theta index, row j = alpha
- * index) at [4 (j n_theta + i)], tex1 = (inv0, inv1, inv2, inv3) with
- * M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (GLSL: mat3(vec3(r, 0, b),
- * vec3(0, 1, 0), vec3(g, 0, a)) is the same matrix, column-major), tex2 =
- * (albedo, fresnel, 0, 1). Sampling convention, linear filtering, clamp to
- * edge: uv = (sqrt(1 - cos theta_o), sqrt(alpha)) (n - 1) / n + 0.5 / n
- * (per axis), which puts the texel centres on the fitted nodes and equals
- * mf_ltc_table_lookup. Rounding is to nearest even; magnitudes below 2^-24
- * flush to 0, above 65504 give the largest finite half. Returns
- * MF_ERROR_INVALID_ARGUMENT on null pointers or sizes below 2, and
- * MF_ERROR_INVALID_DATA (textures untouched) when an entry is not finite. */
+ * ltc_1 and ltc_2 of the published code (Heitz et al. 2016, ltc_code:
+ * fit/fitLTC.cpp packTab, the webgl shaders), in their layout, so that the
+ * published shaders read them unchanged. Each texture is n_alpha wide and
+ * n_theta high, first row first (v = 0, as glTexImage2D takes it): texel
+ * (column j = alpha index, row i = theta index) at [4 (i n_alpha + j)];
+ * u runs over sqrt(alpha) (ltc_code's "roughness"), v over
+ * sqrt(1 - cos theta_o). With M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3]:
+ *   ltc_1 = (inv0, inv2, inv1, inv3) = (Minv00, Minv20, Minv02, Minv22);
+ *   ltc_2 = (albedo, fresnel, 0, sphere).
+ * GLSL lookup, linear filtering, clamp to edge (the published shaders with
+ * LUT_SIZE = n_alpha along u and n_theta along v; texel centres on the
+ * fitted nodes; the same values as mf_ltc_table_lookup):
+ *   uv = vec2(sqrt(alpha), sqrt(1 - NdotV)) * (n - 1) / n + 0.5 / n;
+ *   t1 = texture(ltc_1, uv); t2 = texture(ltc_2, uv);
+ *   Minv = mat3(vec3(t1.x, 0, t1.y), vec3(0, 1, 0), vec3(t1.z, 0, t1.w));
+ *   (column-major: the same matrix), in the frame (T1, T2, N) with T1 along
+ *   V - N (N.V); spec *= f0 t2.x + (1 - f0) t2.y (Schlick).
+ * sphere is ltc_code's table of the horizon-clipped sphere (Hill & Heitz
+ * 2017, the "clipless" path, its own 2D parameterization of the same
+ * texture): at column j and row i, z = 2 j / (n_alpha - 1) - 1 and
+ * len = i / (n_theta - 1), the cosine form factor of a uniform sphere light
+ * whose vector form factor F has |F| = len (= sin^2 of its angular radius)
+ * and F.z / |F| = z (cosine of its centre's angle to the normal), clipped at
+ * the horizon (mf_sphere_form_factor), divided by len (max(z, 0) at
+ * len = 0). Shaders read it with F the (unclipped) vector form factor of
+ * the transformed light: uv = vec2(z * 0.5 + 0.5, len) * (n - 1) / n +
+ * 0.5 / n, form factor = len * texture(ltc_2, uv).w. Rounding is to nearest
+ * even; magnitudes below 2^-24 flush to 0, above 65504 give the largest
+ * finite half. Returns MF_ERROR_INVALID_ARGUMENT on null pointers or sizes
+ * below 2 or above 4096, and MF_ERROR_INVALID_DATA (textures untouched) when
+ * an entry is not finite. */
 MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int n_alpha, unsigned short *tex1,
                                             unsigned short *tex2);
 
@@ -3241,10 +3268,11 @@ MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int 
  * mf_ltc_ggx_fresnel is the integral of f cos (1 - wo.h)^5 (Schlick split).
  * mf_ltc_ggx_table exposes the raw 64 x 64 x 6 floats for GPU textures: rows
  * sqrt(alpha), columns sqrt(1 - cos theta_o), entries inv0 inv1 inv2 inv3
- * albedo fresnel with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (the layout
- * of the published shader textures). Not available in CUDA device code
- * (upload the table instead). The entries are the mf_ltc_table_build fit
- * refined on integrated polygons (tools/ltc_fit.c: per entry, the mean
+ * albedo fresnel with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (the
+ * published normalization, middle entry 1, but not the published texture
+ * layout: mf_ltc_table_export_rgba16f writes that). Not available in CUDA
+ * device code (upload the table instead). The entries are the
+ * mf_ltc_table_build fit refined on integrated polygons (tools/ltc_fit.c: per entry, the mean
  * relative error of the lobe's integral over 56 lights around and away from
  * the mirror direction, the small and thin ones near it held to the plain
  * fit's error): over 512 square lights near and away from the lobe the mean
@@ -7255,23 +7283,42 @@ static unsigned short mf__half_bits(float f)
     }
 }
 
+/* ltc_2.w: the horizon-clipped sphere form factor of |F| = len, F.z / |F| = z,
+ * divided by len (its limit max(z, 0) at len = 0). cot sigma from 1 - len:
+ * through |F| (mf_sphere_form_factor), a float len one ulp below 1 gives
+ * cot sigma = 2.4e-4 instead of 0, and the form factor, whose slope in cot
+ * sigma is -2 sin omega / pi there, moves by 1.5e-4. */
+static mf_real mf__ltc_sphere_ratio(mf_real z, mf_real len)
+{
+    if (!(len > MF_R(0.0))) return mf_max(z, MF_R(0.0));
+    return mf__sphere_form_factor_cs(z, len, MF_SQRT((MF_R(1.0) - len) / len)) / len;
+}
+
 MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int n_alpha, unsigned short *tex1,
                                             unsigned short *tex2)
 {
-    size_t i, n;
-    int k;
+    size_t i, n, e, o;
+    int r, c;
     if (!data || !tex1 || !tex2 || n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096)
         return MF_ERROR_INVALID_ARGUMENT;
     n = (size_t)n_theta * (size_t)n_alpha;
     for (i = 0; i < 6 * n; ++i)
         if (!mf__finite_bits((mf_real)data[i])) return MF_ERROR_INVALID_DATA;
-    for (i = 0; i < n; ++i) {
-        for (k = 0; k < 4; ++k) tex1[4 * i + (size_t)k] = mf__half_bits(data[6 * i + (size_t)k]);
-        tex2[4 * i] = mf__half_bits(data[6 * i + 4]);
-        tex2[4 * i + 1] = mf__half_bits(data[6 * i + 5]);
-        tex2[4 * i + 2] = 0;
-        tex2[4 * i + 3] = 0x3c00u;   /* 1.0 */
-    }
+    /* texel (column c = alpha index, row r = theta index); entry [c][r] of the table */
+    for (r = 0; r < n_theta; ++r)
+        for (c = 0; c < n_alpha; ++c) {
+            e = 6 * ((size_t)c * (size_t)n_theta + (size_t)r);
+            o = 4 * ((size_t)r * (size_t)n_alpha + (size_t)c);
+            tex1[o] = mf__half_bits(data[e]);            /* Minv00 */
+            tex1[o + 1] = mf__half_bits(data[e + 2]);    /* Minv20 */
+            tex1[o + 2] = mf__half_bits(data[e + 1]);    /* Minv02 */
+            tex1[o + 3] = mf__half_bits(data[e + 3]);    /* Minv22 */
+            tex2[o] = mf__half_bits(data[e + 4]);
+            tex2[o + 1] = mf__half_bits(data[e + 5]);
+            tex2[o + 2] = 0;
+            tex2[o + 3] = mf__half_bits((float)mf__ltc_sphere_ratio(
+                (mf_real)(2 * c) / (mf_real)(n_alpha - 1) - MF_R(1.0), (mf_real)r / (mf_real)(n_theta - 1)));
+        }
     return MF_SUCCESS;
 }
 

@@ -206,9 +206,11 @@
  *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at
  *          grazing views for any kind. LTC: rational
  *          edge, one normalization per vertex; tables store M^-1 with a unit
- *          middle entry (the published texture layout: the raw data of
+ *          middle entry (the published normalization: the raw data of
  *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed
- *          meaning), mf_ltc_table_export_rgba16f. MF_FORCE_INLINE on the hot
+ *          meaning), mf_ltc_table_export_rgba16f (the published ltc_1 and
+ *          ltc_2 textures in ltc_code's layout and channel order, the
+ *          horizon-clipped sphere table in ltc_2.w). MF_FORCE_INLINE on the hot
  *          paths; Beckmann visible normals in closed form at normal
  *          incidence; faster IBM queries; MF_FAST_MATH; solver iteration
  *          caps reported to tests (MF__SOLVER_DONE).
