@@ -3645,7 +3645,7 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  * Map (Eq. 5.15, 5.17) with node-level prefiltering; sampling and pdf Eq. 5.16. */
 
 /* Use: build once per normal map and flake roughness (mf_ibm_build, section
- * 14; about 0.05-0.1 s and 16-28 MB for a 2048^2 map), then per shading point
+ * 14; about 0.05-0.13 s and 16-28 MB for a 2048^2 map), then per shading point
  * pass the pixel footprint in texture space (e.g. from ray differentials):
  *
  *     mf_ibm ibm;
@@ -11515,13 +11515,46 @@ static int mf__ibm_bitlen(size_t v)
     return n;
 }
 
-/* ORs v into field i (w bits) of a zeroed packed array */
+/* ORs v (< 2^w) into field i (w bits) of a zeroed packed array; the word
+ * after the field's first gets the bits past it, none when the field ends
+ * inside (no branch: every packed section ends with a spare word) */
 MF_INLINE void mf__ibm_put(unsigned int *base, size_t i, int w, unsigned int v)
 {
     size_t bit = i * (size_t)w;
     unsigned int *p = base + (bit >> 5), s = (unsigned int)(bit & 31u);
     p[0] |= v << s;
-    if (s + (unsigned int)w > 32u) p[1] |= v >> (32u - s);
+    p[1] |= (v >> 1) >> (31u - s);
+}
+
+/* 1 if a and b have the same bits (not ==, which -ffast-math may let hold
+ * for a NaN) */
+static int mf__ibm_same_bits(mf_real a, mf_real b)
+{
+    union { mf_real f; unsigned int u[sizeof(mf_real) / sizeof(unsigned int)]; } x, y;
+    unsigned int d = 0u;
+    size_t i;
+    x.f = a; y.f = b;
+    for (i = 0; i < sizeof(mf_real) / sizeof(unsigned int); ++i) d |= x.u[i] ^ y.u[i];
+    return d == 0u;
+}
+
+/* ORs the m fields v[0..m-1] (w bits each) into fields i, i+1, ... of a
+ * zeroed packed array: one memory access per 32 bits */
+static void mf__ibm_put_row(unsigned int *base, size_t i, int w, const unsigned int *v, int m)
+{
+    size_t bit = i * (size_t)w;
+    unsigned int *p = base + (bit >> 5), acc = 0u, fill = (unsigned int)(bit & 31u);
+    int t;
+    for (t = 0; t < m; ++t) {
+        acc |= v[t] << fill;
+        fill += (unsigned int)w;
+        if (fill >= 32u) {   /* a word is complete; the field's rest starts the next */
+            *p++ |= acc;
+            fill -= 32u;
+            acc = fill ? v[t] >> ((unsigned int)w - fill) : 0u;
+        }
+    }
+    if (fill) *p |= acc;
 }
 
 /* The derived fields of a map from its header values; returns the word count
@@ -11595,11 +11628,13 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
 {
     mf_ibm L;
     size_t n, bins, words, i, ncodes, bmw;
-    unsigned int *data = 0, *tmp = 0, *cur = 0, *list, *bmap = 0, *mx = 0, *my = 0, start = 0u, amask;
+    unsigned int *data = 0, *cur = 0, *st = 0, *list, *bmap = 0, *t32 = 0, start = 0u, bad = 0u, none;
+    unsigned short *t16 = 0;
+    void *tmp = 0;
     double *sums = 0, sxx = 0.0, syy = 0.0;
     unsigned char tile[64];
-    mf_real alpha, cut;
-    int res, radius, x, y;
+    mf_real alpha, cut, fb;
+    int res, radius, x, y, kmin;
     if (!ibm) return MF_ERROR_INVALID_ARGUMENT;
     mf__ibm_zero(ibm);
     mf__ibm_zero(&L);
@@ -11614,58 +11649,93 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     bins = (size_t)res * (size_t)res;
     if (!mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n)) return MF_ERROR_INVALID_ARGUMENT;
     ncodes = (size_t)1 << (L.kx + L.ky);
-    amask = (1u << L.axis_bits) - 1u;
+    kmin = L.kx < L.ky ? L.kx : L.ky;
+    fb = (mf_real)res;
     bmw = (n * (size_t)L.bin_bits + 31u) / 32u + 1u;
-    tmp = (unsigned int *)MF_MALLOC(ncodes * sizeof(unsigned int));
+    /* every texel's bin j by its Morton code (16 bits when the bins allow);
+     * codes outside the map hold `none` */
+    none = bins < 0xffffu ? 0xffffu : 0xffffffffu;
+    tmp = MF_MALLOC(ncodes * (none == 0xffffu ? sizeof(unsigned short) : sizeof(unsigned int)));
     cur = (unsigned int *)MF_MALLOC((bins + 1u) * sizeof(unsigned int));
     sums = (double *)MF_MALLOC(2u * bins * sizeof(double));
     bmap = (unsigned int *)MF_MALLOC(bmw * sizeof(unsigned int));
-    mx = (unsigned int *)MF_MALLOC(((size_t)width + (size_t)height) * sizeof(unsigned int));
-    my = mx ? mx + width : 0;
-    if (!tmp || !cur || !sums || !bmap || !mx) {
-        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
+    if (!tmp || !cur || !sums || !bmap) {
+        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap);
         return MF_ERROR_OUT_OF_MEMORY;
     }
+    if (none == 0xffffu) t16 = (unsigned short *)tmp;
+    else t32 = (unsigned int *)tmp;
     for (i = 0; i <= bins; ++i) cur[i] = 0u;   /* sums: set by the first texel of a bin */
     for (i = 0; i < bmw; ++i) bmap[i] = 0u;
-    for (x = 0; x < width; ++x) mx[x] = mf__ibm_morton(L.kx, L.ky, (unsigned int)x, 0u);
-    if (ncodes != n)
-        for (i = 0; i < ncodes; ++i) tmp[i] = 0xffffffffu;
+    if (ncodes != n) {
+        if (t16) for (i = 0; i < ncodes; ++i) t16[i] = 0xffffu;
+        else for (i = 0; i < ncodes; ++i) t32[i] = 0xffffffffu;
+    }
     /* pass 1, in 8 x 8 tiles: validate, bin (Eq. 5.15), count, per-bin sums,
-     * the bin map (bins as ix | iy << s); every texel's bin also goes to its
-     * Morton code (the x and y bits of the code are disjoint: OR them). Runs
-     * of one bin (flakes) add up in registers before they reach memory. */
-    for (i = 0; i < (size_t)height; ++i) my[i] = mf__ibm_morton(L.kx, L.ky, 0u, (unsigned int)i);
+     * the bin map (bins as ix | iy << s), the bins by Morton code. The
+     * tile's rows are binned first (contiguous normals, no branch: a bad
+     * normal only sets a flag, checked once per tile; a texel with its left
+     * neighbour's normal takes its results); then its texels in Morton order
+     * (the tile's 64 consecutive codes when both sides have 8 texels or
+     * more) add up in runs of one bin (flakes) in registers before they reach
+     * memory. */
     for (i = 0; i < 64u; ++i) tile[i] = (unsigned char)(mf__ibm_compact((unsigned int)i >> 1) | (mf__ibm_compact((unsigned int)i) << 3));
     for (y = 0; y < height; y += 8)
         for (x = 0; x < width; x += 8) {
-            unsigned int rj = 0xffffffffu, rc = 0u, q;
+            unsigned int rj = 0xffffffffu, rc = 0u, q, tj[64], bc[8], mb;
+            int w8 = width - x < 8 ? width - x : 8, h8 = height - y < 8 ? height - y : 8, r, c;
+            mf_real tx[64], ty[64];
             double rx = 0.0, ry = 0.0;
-            for (q = 0; q <= 64u; ++q) {
-                int tx = x + (int)(tile[q & 63u] & 7u), ty = y + (int)(tile[q & 63u] >> 3);
-                unsigned int ix, iy, j = 0xfffffffeu;
-                mf_real nx = MF_R(0.0), ny = MF_R(0.0);
-                if (q < 64u) {
-                    size_t k = (size_t)ty * (size_t)width + (size_t)tx;
-                    const mf_real *nv = normals_xyz + 3u * k;
-                    mf_real nz, l2, il;
-                    if (tx >= width || ty >= height) continue;
-                    nx = nv[0]; ny = nv[1]; nz = nv[2]; l2 = nx * nx + ny * ny + nz * nz;
-                    if (!mf__finite_bits(nx) || !mf__finite_bits(ny) || !mf__finite_bits(nz) ||
-                        !(nz > MF_R(0.0)) || !(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3))) {
-                        MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap); MF_FREE(mx);
-                        return MF_ERROR_INVALID_DATA;
+            for (r = 0; r < h8; ++r) {
+                size_t k = (size_t)(y + r) * (size_t)width + (size_t)x;
+                const mf_real *nv = normals_xyz + 3u * k;
+                for (c = 0; c < w8; ++c, nv += 3) {
+                    mf_real nx = nv[0], ny = nv[1], nz = nv[2], l2, il, fx, fy;
+                    unsigned int ix, iy;
+                    if (c > 0 && mf__ibm_same_bits(nx, nv[-3]) && mf__ibm_same_bits(ny, nv[-2]) &&
+                        mf__ibm_same_bits(nz, nv[-1])) {
+                        /* the left neighbour's normal, bit for bit (flakes, flat
+                         * regions): its results (and its validity) */
+                        tj[8 * r + c] = tj[8 * r + c - 1];
+                        tx[8 * r + c] = tx[8 * r + c - 1]; ty[8 * r + c] = ty[8 * r + c - 1];
+                        bc[c] = bc[c - 1];
+                        continue;
                     }
+                    /* l2 is finite iff the three are and it does not overflow */
+                    l2 = nx * nx + ny * ny + nz * nz;
+                    bad |= (unsigned int)(!mf__finite_bits(l2)) | (unsigned int)(!(nz > MF_R(0.0))) |
+                           (unsigned int)(!(MF_FABS(l2 - MF_R(1.0)) < MF_R(1e-3)));
                     /* 1/sqrt(l2) by two Newton steps from 1 (|l2 - 1| < 1e-3:
                      * error < 1e-12, no sqrt or division in the hot loop) */
                     il = MF_R(1.5) - MF_R(0.5) * l2;
                     il *= MF_R(1.5) - MF_R(0.5) * l2 * il * il;
                     nx *= il; ny *= il;
-                    ix = (unsigned int)mf__ibm_cell(nx, res); iy = (unsigned int)mf__ibm_cell(ny, res);
-                    j = ix + (unsigned int)res * iy;
-                    mf__ibm_put(bmap, k, L.bin_bits, ix | (iy << L.axis_bits));
-                    tmp[mx[tx] | my[ty]] = ix | (iy << L.axis_bits);
+                    /* mf__ibm_cell without branches: <= 0 or NaN -> 0, >= b -> b - 1 */
+                    fx = fb * (MF_R(0.5) * nx + MF_R(0.5));
+                    fy = fb * (MF_R(0.5) * ny + MF_R(0.5));
+                    fx = fx > MF_R(0.0) ? fx : MF_R(0.0);
+                    fy = fy > MF_R(0.0) ? fy : MF_R(0.0);
+                    ix = fx < fb ? (unsigned int)(int)fx : (unsigned int)res - 1u;
+                    iy = fy < fb ? (unsigned int)(int)fy : (unsigned int)res - 1u;
+                    tj[8 * r + c] = ix + (unsigned int)res * iy;
+                    tx[8 * r + c] = nx; ty[8 * r + c] = ny;
+                    bc[c] = ix | (iy << L.axis_bits);
                 }
+                mf__ibm_put_row(bmap, k, L.bin_bits, bc, w8);
+            }
+            if (bad) {
+                MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap);
+                return MF_ERROR_INVALID_DATA;
+            }
+            mb = mf__ibm_morton(L.kx, L.ky, (unsigned int)x, (unsigned int)y);
+            for (q = 0; q < 64u; ++q) {
+                unsigned int t = tile[q], j, code;
+                if ((w8 < 8 || h8 < 8) && ((int)(t & 7u) >= w8 || (int)(t >> 3) >= h8)) continue;
+                code = kmin >= 3 ? mb + q : mf__ibm_morton(L.kx, L.ky, (unsigned int)x + (t & 7u), (unsigned int)y + (t >> 3));
+                t = (t & 7u) + 8u * (t >> 3);
+                j = tj[t];
+                if (t16) t16[code] = (unsigned short)j;
+                else t32[code] = j;
                 if (j != rj) {
                     if (rc) {
                         if (cur[rj]) { sums[2u * rj] += rx; sums[2u * rj + 1u] += ry; }
@@ -11674,10 +11744,14 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     }
                     rj = j; rc = 0u; rx = ry = 0.0;
                 }
-                ++rc; rx += (double)nx; ry += (double)ny;
+                ++rc; rx += (double)tx[t]; ry += (double)ty[t];
+            }
+            if (rc) {
+                if (cur[rj]) { sums[2u * rj] += rx; sums[2u * rj + 1u] += ry; }
+                else { sums[2u * rj] = rx; sums[2u * rj + 1u] = ry; }
+                cur[rj] += rc;
             }
         }
-    MF_FREE(mx);
     /* block sizes: n, or n + 2 + 2^k with the top k levels of the kd-tree */
     for (i = 0; i < bins; ++i) {
         unsigned int c = cur[i];
@@ -11693,8 +11767,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     for (i = 0; i < bmw; ++i) data[L.bin_at + i] = bmap[i];
     MF_FREE(bmap);
     list = data + L.pos_at;
-    /* means, quantized inside their bin; the index (Sec. 5.4.4); cur becomes
-     * the write cursor of each bin's positions */
+    /* means, quantized inside their bin; the index (Sec. 5.4.4) */
     start = 0u;
     for (i = 0; i < bins; ++i) {
         unsigned int c = cur[i], q = 0x80008000u;
@@ -11715,49 +11788,101 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
         }
         data[L.mean_at + i] = q;
         mf__ibm_put(data + L.off_at, i, L.off_bits, start);
-        if (c < (unsigned int)MF_IBM_TREE_MIN) { cur[i] = start; start += c; }
-        else {
-            unsigned int kn = 1u << mf__ibm_tree_levels(&L, c);
-            mf__ibm_put(list, start, L.list_bits, c);
-            cur[i] = start + 2u + kn;
-            start += c + 2u + kn;
-        }
+        start += c < (unsigned int)MF_IBM_TREE_MIN ? c : c + 2u + (1u << mf__ibm_tree_levels(&L, c));
     }
     mf__ibm_put(data + L.off_at, bins, L.off_bits, start);
     MF_FREE(sums);
-    /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
-     * grouped by bin, each group sorted because the codes come in order */
-    {
-        unsigned int rv = 0xffffffffu, rj = 0u, c = 0u;
-        for (i = 0; i < ncodes; ++i) {
-            unsigned int v = tmp[i];
-            if (v == 0xffffffffu) continue;
-            if (v != rv) {   /* runs of one bin keep their cursor in a register */
-                if (rv != 0xffffffffu) cur[rj] = c;
-                rv = v;
-                rj = (v & amask) + (unsigned int)res * (v >> L.axis_bits);
-                c = cur[rj];
-            }
-            mf__ibm_put(list, c++, L.list_bits, (unsigned int)i);
-        }
+    /* per bin, the write state of pass 2 (3 words, in place of the sums):
+     * the cursor of its positions, their start, and for a bin with a
+     * kd-tree top (k levels) k << 26 | the next level-k node to bound
+     * (0xffffffff: no tree) */
+    st = (unsigned int *)MF_MALLOC(3u * bins * sizeof(unsigned int) + sizeof(unsigned int));
+    if (!st) {
+        MF_FREE(tmp); MF_FREE(cur); MF_FREE(data);
+        return MF_ERROR_OUT_OF_MEMORY;
     }
-    MF_FREE(tmp); MF_FREE(cur);
-    /* the forest (Sec. 5.4.4): level-k node boundaries of the large bins */
+    start = 0u;
     for (i = 0; i < bins; ++i) {
-        unsigned int s, e, c, base, tab, q, node = 0u;
-        int k, shift;
-        L.data = data;
-        s = mf__ibm_off(&L, (int)i);
-        e = mf__ibm_off(&L, (int)i + 1);
-        if (e - s < (unsigned int)MF_IBM_TREE_MIN) continue;
-        c = mf__ibm_bin_info(&L, (int)i, &base, &tab, &k);
-        shift = L.kx + L.ky - k;
-        for (q = 0; q < c; ++q) {
-            unsigned int idx = mf__ibm_get(list, base + q, L.list_bits) >> shift;
-            while (node <= idx) mf__ibm_put(list, tab + node++, L.list_bits, q);
+        unsigned int c = cur[i];
+        if (c < (unsigned int)MF_IBM_TREE_MIN) {
+            st[3u * i] = st[3u * i + 1u] = start; st[3u * i + 2u] = 0xffffffffu;
+            start += c;
+        } else {
+            int k = mf__ibm_tree_levels(&L, c);
+            unsigned int kn = 1u << k;
+            mf__ibm_put(list, start, L.list_bits, c);
+            st[3u * i] = st[3u * i + 1u] = start + 2u + kn;
+            st[3u * i + 2u] = (unsigned int)k << 26;
+            start += c + 2u + kn;
         }
-        while (node <= (1u << k)) mf__ibm_put(list, tab + node++, L.list_bits, c);
     }
+    MF_FREE(cur);
+    /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
+     * grouped by bin, each group sorted because the codes come in order -
+     * and the forest (Sec. 5.4.4): a bin's level-k node boundary is written
+     * when its first position at or past the node arrives. Runs of one bin
+     * keep their state in registers, and their positions gather in a word
+     * that reaches memory when full (no read-modify-write chain per texel). */
+    {
+        unsigned int rj = 0xffffffffu, c = 0u, base = 0u, node = 0u, lim = 0xffffffffu, tab = 0u, acc = 0u, fill = 0u;
+        unsigned int w = (unsigned int)L.list_bits, *wp = list;
+        int shift = 0, tk = -1;
+        for (i = 0; i < ncodes; ++i) {
+            unsigned int j = t16 ? (unsigned int)t16[i] : t32[i], code = (unsigned int)i;
+            if (j == none) continue;
+            if (j != rj) {   /* a new run: save the old bin's state, load the new one's */
+                if (rj != 0xffffffffu) {
+                    *wp |= acc;
+                    st[3u * rj] = c;
+                    if (tk >= 0) st[3u * rj + 2u] = ((unsigned int)tk << 26) | node;
+                }
+                rj = j;
+                c = st[3u * rj];
+                wp = list + (((size_t)c * w) >> 5);
+                fill = (unsigned int)(((size_t)c * w) & 31u);
+                acc = 0u;
+                node = st[3u * rj + 2u];
+                if (node == 0xffffffffu) { tk = -1; lim = 0xffffffffu; }
+                else {
+                    tk = (int)(node >> 26);
+                    node &= 0x03ffffffu;
+                    base = st[3u * rj + 1u];
+                    tab = base - 1u - (1u << tk);
+                    shift = L.kx + L.ky - tk;
+                    lim = node << shift;
+                }
+            }
+            while (code >= lim) {   /* the level-k nodes up to this one start at this position */
+                mf__ibm_put(list, tab + node, L.list_bits, c - base);
+                ++node;
+                lim = node << shift;
+            }
+            ++c;
+            acc |= code << fill;
+            fill += w;
+            if (fill >= 32u) {   /* a full word; the rest of the field starts the next */
+                *wp++ |= acc;
+                fill -= 32u;
+                acc = fill ? code >> (w - fill) : 0u;
+            }
+        }
+        if (rj != 0xffffffffu) {
+            *wp |= acc;
+            st[3u * rj] = c;
+            if (tk >= 0) st[3u * rj + 2u] = ((unsigned int)tk << 26) | node;
+        }
+    }
+    MF_FREE(tmp);
+    /* the remaining node boundaries of each tree: the bin's count */
+    for (i = 0; i < bins; ++i) {
+        unsigned int s = st[3u * i + 2u], node, kn, cnt;
+        if (s == 0xffffffffu) continue;
+        kn = 1u << (s >> 26);
+        cnt = st[3u * i] - st[3u * i + 1u];
+        for (node = s & 0x03ffffffu; node <= kn; ++node)
+            mf__ibm_put(list, st[3u * i + 1u] - 1u - kn + node, L.list_bits, cnt);
+    }
+    MF_FREE(st);
     data[0] = MF_IBM_MAGIC;
     data[1] = MF_IBM_VERSION;
     data[2] = (unsigned int)words;
