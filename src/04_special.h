@@ -133,14 +133,23 @@ MF_INLINE mf_real mf__betacf(mf_real a, mf_real b, mf_real x)
     MF__SOLVER_DONE(MF__SITE_BETACF, m > 300 ? 300 : m, 300);
     return h;
 }
-MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
+/* I_x(a, b) from x, y = 1 - x and their logs as the caller computes them,
+ * so that nothing rounds 1 - x where x is near 1 (Student-t's Lambda:
+ * x = (g-1)/(g-1 + mu^2), a = g - 1 up to 999) */
+MF_INLINE mf_real mf__betainc_xy(mf_real a, mf_real b, mf_real x, mf_real y, mf_real lx, mf_real ly, mf_real lbeta)
 {
     mf_real front;
     if (!(x > MF_R(0.0))) return MF_R(0.0);
-    if (!(x < MF_R(1.0))) return MF_R(1.0);
-    front = MF_EXP(a * MF_LOG(x) + b * MF_LOG1P(-x) - lbeta);
+    if (!(y > MF_R(0.0))) return MF_R(1.0);
+    front = MF_EXP(a * lx + b * ly - lbeta);
     if (x < (a + MF_R(1.0)) / (a + b + MF_R(2.0))) return front * mf__betacf(a, b, x) / a;
-    return MF_R(1.0) - front * mf__betacf(b, a, MF_R(1.0) - x) / b;
+    return MF_R(1.0) - front * mf__betacf(b, a, y) / b;
+}
+MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
+{
+    if (!(x > MF_R(0.0))) return MF_R(0.0);
+    if (!(x < MF_R(1.0))) return MF_R(1.0);
+    return mf__betainc_xy(a, b, x, MF_R(1.0) - x, MF_LOG(x), MF_LOG1P(-x), lbeta);
 }
 /* @cold */
 /* One step of safeguarded Newton for an increasing f on the bracket [lo, hi]:
