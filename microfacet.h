@@ -3776,9 +3776,8 @@ MF_INLINE int mf__ibm_cell(mf_real v, int b)
 {
     mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
     int c;
-    if (!(f > MF_R(0.0))) return 0;              /* also NaN */
-    if (f >= (mf_real)b) return b - 1;
-    c = (int)f;                                  /* truncation = floor for f > 0 */
+    f = f > MF_R(0.0) ? f : MF_R(0.0);           /* also NaN; selects, no branch (the build's hot loop) */
+    c = f < (mf_real)b ? (int)f : b - 1;         /* truncation = floor for f >= 0 */
     return c >= 0 && c < b ? c : 0;              /* in range even where -ffast-math let NaN through */
 }
 
@@ -11653,7 +11652,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     void *tmp = 0;
     double *sums = 0, sxx = 0.0, syy = 0.0;
     unsigned char tile[64];
-    mf_real alpha, cut, fb;
+    mf_real alpha, cut;
     int res, radius, x, y, kmin;
     if (!ibm) return MF_ERROR_INVALID_ARGUMENT;
     mf__ibm_zero(ibm);
@@ -11670,7 +11669,6 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     if (!mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n)) return MF_ERROR_INVALID_ARGUMENT;
     ncodes = (size_t)1 << (L.kx + L.ky);
     kmin = L.kx < L.ky ? L.kx : L.ky;
-    fb = (mf_real)res;
     bmw = (n * (size_t)L.bin_bits + 31u) / 32u + 1u;
     /* every texel's bin j by its Morton code (16 bits when the bins allow);
      * codes outside the map hold `none` */
@@ -11710,7 +11708,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                 size_t k = (size_t)(y + r) * (size_t)width + (size_t)x;
                 const mf_real *nv = normals_xyz + 3u * k;
                 for (c = 0; c < w8; ++c, nv += 3) {
-                    mf_real nx = nv[0], ny = nv[1], nz = nv[2], l2, il, fx, fy;
+                    mf_real nx = nv[0], ny = nv[1], nz = nv[2], l2, il;
                     unsigned int ix, iy;
                     if (c > 0 && mf__ibm_same_bits(nx, nv[-3]) && mf__ibm_same_bits(ny, nv[-2]) &&
                         mf__ibm_same_bits(nz, nv[-1])) {
@@ -11730,13 +11728,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     il = MF_R(1.5) - MF_R(0.5) * l2;
                     il *= MF_R(1.5) - MF_R(0.5) * l2 * il * il;
                     nx *= il; ny *= il;
-                    /* mf__ibm_cell without branches: <= 0 or NaN -> 0, >= b -> b - 1 */
-                    fx = fb * (MF_R(0.5) * nx + MF_R(0.5));
-                    fy = fb * (MF_R(0.5) * ny + MF_R(0.5));
-                    fx = fx > MF_R(0.0) ? fx : MF_R(0.0);
-                    fy = fy > MF_R(0.0) ? fy : MF_R(0.0);
-                    ix = fx < fb ? (unsigned int)(int)fx : (unsigned int)res - 1u;
-                    iy = fy < fb ? (unsigned int)(int)fy : (unsigned int)res - 1u;
+                    ix = (unsigned int)mf__ibm_cell(nx, res); iy = (unsigned int)mf__ibm_cell(ny, res);
                     tj[8 * r + c] = ix + (unsigned int)res * iy;
                     tx[8 * r + c] = nx; ty[8 * r + c] = ny;
                     bc[c] = ix | (iy << L.axis_bits);
