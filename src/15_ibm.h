@@ -1268,24 +1268,30 @@ static int mf__ibm_same_bits(mf_real a, mf_real b)
     return d == 0u;
 }
 
-/* ORs the m fields v[0..m-1] (w bits each) into fields i, i+1, ... of a
- * zeroed packed array: one memory access per 32 bits */
-static void mf__ibm_put_row(unsigned int *base, size_t i, int w, const unsigned int *v, int m)
+/* A sequential writer of w-bit fields into a zeroed packed array: fields
+ * gather in acc and reach memory one word at a time (no read-modify-write
+ * chain per field); flush ORs the partial last word (a spare word ends
+ * every packed section, so it may be the word past the last field). */
+typedef struct mf__ibm_writer { unsigned int *p, acc, fill, w; } mf__ibm_writer;
+MF_INLINE void mf__ibm_writer_at(mf__ibm_writer *r, unsigned int *base, size_t i, int w)
 {
     size_t bit = i * (size_t)w;
-    unsigned int *p = base + (bit >> 5), acc = 0u, fill = (unsigned int)(bit & 31u);
-    int t;
-    for (t = 0; t < m; ++t) {
-        acc |= v[t] << fill;
-        fill += (unsigned int)w;
-        if (fill >= 32u) {   /* a word is complete; the field's rest starts the next */
-            *p++ |= acc;
-            fill -= 32u;
-            acc = fill ? v[t] >> ((unsigned int)w - fill) : 0u;
-        }
-    }
-    if (fill) *p |= acc;
+    r->p = base + (bit >> 5);
+    r->fill = (unsigned int)(bit & 31u);
+    r->acc = 0u;
+    r->w = (unsigned int)w;
 }
+MF_INLINE void mf__ibm_writer_push(mf__ibm_writer *r, unsigned int v)
+{
+    r->acc |= v << r->fill;
+    r->fill += r->w;
+    if (r->fill >= 32u) {   /* a word is complete; the field's rest starts the next */
+        *r->p++ |= r->acc;
+        r->fill -= 32u;
+        r->acc = r->fill ? v >> (r->w - r->fill) : 0u;
+    }
+}
+MF_INLINE void mf__ibm_writer_flush(mf__ibm_writer *r) { *r->p |= r->acc; }
 
 /* The derived fields of a map from its header values; returns the word count
  * (0 if the sizes are out of range). */
@@ -1444,7 +1450,12 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     tx[8 * r + c] = nx; ty[8 * r + c] = ny;
                     bc[c] = ix | (iy << L.axis_bits);
                 }
-                mf__ibm_put_row(bmap, k, L.bin_bits, bc, w8);
+                {
+                    mf__ibm_writer wr;
+                    mf__ibm_writer_at(&wr, bmap, k, L.bin_bits);
+                    for (c = 0; c < w8; ++c) mf__ibm_writer_push(&wr, bc[c]);
+                    mf__ibm_writer_flush(&wr);
+                }
             }
             if (bad) {
                 MF_FREE(tmp); MF_FREE(cur); MF_FREE(sums); MF_FREE(bmap);
@@ -1547,23 +1558,22 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
      * keep their state in registers, and their positions gather in a word
      * that reaches memory when full (no read-modify-write chain per texel). */
     {
-        unsigned int rj = 0xffffffffu, c = 0u, base = 0u, node = 0u, lim = 0xffffffffu, tab = 0u, acc = 0u, fill = 0u;
-        unsigned int w = (unsigned int)L.list_bits, *wp = list;
+        unsigned int rj = 0xffffffffu, c = 0u, base = 0u, node = 0u, lim = 0xffffffffu, tab = 0u;
         int shift = 0, tk = -1;
+        mf__ibm_writer wr;
+        mf__ibm_writer_at(&wr, list, 0u, L.list_bits);
         for (i = 0; i < ncodes; ++i) {
             unsigned int j = t16 ? (unsigned int)t16[i] : t32[i], code = (unsigned int)i;
             if (j == none) continue;
             if (j != rj) {   /* a new run: save the old bin's state, load the new one's */
                 if (rj != 0xffffffffu) {
-                    *wp |= acc;
+                    mf__ibm_writer_flush(&wr);
                     st[3u * rj] = c;
                     if (tk >= 0) st[3u * rj + 2u] = ((unsigned int)tk << 26) | node;
                 }
                 rj = j;
                 c = st[3u * rj];
-                wp = list + (((size_t)c * w) >> 5);
-                fill = (unsigned int)(((size_t)c * w) & 31u);
-                acc = 0u;
+                mf__ibm_writer_at(&wr, list, c, L.list_bits);
                 node = st[3u * rj + 2u];
                 if (node == 0xffffffffu) { tk = -1; lim = 0xffffffffu; }
                 else {
@@ -1581,16 +1591,10 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                 lim = node << shift;
             }
             ++c;
-            acc |= code << fill;
-            fill += w;
-            if (fill >= 32u) {   /* a full word; the rest of the field starts the next */
-                *wp++ |= acc;
-                fill -= 32u;
-                acc = fill ? code >> (w - fill) : 0u;
-            }
+            mf__ibm_writer_push(&wr, code);
         }
         if (rj != 0xffffffffu) {
-            *wp |= acc;
+            mf__ibm_writer_flush(&wr);
             st[3u * rj] = c;
             if (tk >= 0) st[3u * rj + 2u] = ((unsigned int)tk << 26) | node;
         }
