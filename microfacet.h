@@ -3152,14 +3152,8 @@ MF_INLINE mf_vec3 mf_polygon_vector_form_factor(const mf_vec3 *verts, int n)
     return mf_scale(f, MF_R(-0.15915494309189533577));
 }
 
-/* Cosine form factor of a uniform sphere light of angular radius sigma whose
- * center lies at angle omega from the normal, clipped at the horizon
- * (Snyder 1996), from F = its vector form factor: |F| = sin^2 sigma,
- * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
- * disk, it is the sphere approximation of their horizon-clipped form factor
- * (Hill & Heitz 2016). */
-/* the same from co = cos omega in [-1, 1], s2 = sin^2 sigma in (0, 1] and
- * x = cot sigma */
+/* The sphere form factor below (mf_sphere_form_factor) from co = cos omega
+ * in [-1, 1], s2 = sin^2 sigma in (0, 1] and x = cot sigma */
 MF_INLINE mf_real mf__sphere_form_factor_cs(mf_real co, mf_real s2, mf_real x)
 {
     mf_real so = MF_SQRT(MF_R(1.0) - co * co), y, z;
@@ -3170,6 +3164,12 @@ MF_INLINE mf_real mf__sphere_form_factor_cs(mf_real co, mf_real s2, mf_real x)
     z = so * MF_SQRT(MF_R(1.0) - y * y);
     return mf_max(((co * MF_ACOS(y) - x * z) * s2 + MF_ATAN2(z, x)) * MF_INV_PI, MF_R(0.0));
 }
+/* Cosine form factor of a uniform sphere light of angular radius sigma whose
+ * center lies at angle omega from the normal, clipped at the horizon
+ * (Snyder 1996), from F = its vector form factor: |F| = sin^2 sigma,
+ * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
+ * disk, it is the sphere approximation of their horizon-clipped form factor
+ * (Hill & Heitz 2016). */
 MF_INLINE mf_real mf_sphere_form_factor(mf_vec3 F)
 {
     mf_real len = MF_SQRT(mf_dot(F, F)), s2;
@@ -4946,15 +4946,15 @@ MF_COLD mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm)
 /* Student-t Lambda for unit roughness, as a function of mu = cot(theta) / alpha_w. */
 MF_INLINE mf_real mf__student_t_lambda_mu(const mf_ndf *d, mf_real mu)
 {
-    mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), l1p, head, w, tail;
+    mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), m2, l1p, head, w, tail;
     if (!(mu < MF_R(1e15))) return MF_R(0.0);
     mu = mf_max(mu, MF_R(1e-15));
-    l1p = MF_LOG1P(mu * mu / g1);
+    m2 = mu * mu;
+    l1p = MF_LOG1P(m2 / g1);
     head = d->p.student_t.K * g1 / ((MF_R(2.0) * g - MF_R(3.0)) * mu) * MF_EXP((MF_R(1.5) - g) * l1p);
-    w = g1 / (g1 + mu * mu);
+    w = g1 / (g1 + m2);
     /* x = w, 1 - x = mu^2 / (g1 + mu^2), log x = -l1p: no rounding of 1 - w */
-    tail = MF_R(0.5) * mf__betainc_xy(g1, MF_R(0.5), w, mu * mu / (g1 + mu * mu), -l1p, MF_LOG(mu * mu / g1) - l1p,
-                                      d->p.student_t.lbeta);
+    tail = MF_R(0.5) * mf__betainc_xy(g1, MF_R(0.5), w, m2 / (g1 + m2), -l1p, MF_LOG(m2 / g1) - l1p, d->p.student_t.lbeta);
     return mf_max(head - tail, MF_R(0.0));
 }
 

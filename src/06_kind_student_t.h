@@ -82,15 +82,15 @@ MF_COLD mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm)
 /* Student-t Lambda for unit roughness, as a function of mu = cot(theta) / alpha_w. */
 MF_INLINE mf_real mf__student_t_lambda_mu(const mf_ndf *d, mf_real mu)
 {
-    mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), l1p, head, w, tail;
+    mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), m2, l1p, head, w, tail;
     if (!(mu < MF_R(1e15))) return MF_R(0.0);
     mu = mf_max(mu, MF_R(1e-15));
-    l1p = MF_LOG1P(mu * mu / g1);
+    m2 = mu * mu;
+    l1p = MF_LOG1P(m2 / g1);
     head = d->p.student_t.K * g1 / ((MF_R(2.0) * g - MF_R(3.0)) * mu) * MF_EXP((MF_R(1.5) - g) * l1p);
-    w = g1 / (g1 + mu * mu);
+    w = g1 / (g1 + m2);
     /* x = w, 1 - x = mu^2 / (g1 + mu^2), log x = -l1p: no rounding of 1 - w */
-    tail = MF_R(0.5) * mf__betainc_xy(g1, MF_R(0.5), w, mu * mu / (g1 + mu * mu), -l1p, MF_LOG(mu * mu / g1) - l1p,
-                                      d->p.student_t.lbeta);
+    tail = MF_R(0.5) * mf__betainc_xy(g1, MF_R(0.5), w, m2 / (g1 + m2), -l1p, MF_LOG(m2 / g1) - l1p, d->p.student_t.lbeta);
     return mf_max(head - tail, MF_R(0.0));
 }
 

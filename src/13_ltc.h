@@ -497,14 +497,8 @@ MF_INLINE mf_vec3 mf_polygon_vector_form_factor(const mf_vec3 *verts, int n)
     return mf_scale(f, MF_R(-0.15915494309189533577));
 }
 
-/* Cosine form factor of a uniform sphere light of angular radius sigma whose
- * center lies at angle omega from the normal, clipped at the horizon
- * (Snyder 1996), from F = its vector form factor: |F| = sin^2 sigma,
- * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
- * disk, it is the sphere approximation of their horizon-clipped form factor
- * (Hill & Heitz 2016). */
-/* the same from co = cos omega in [-1, 1], s2 = sin^2 sigma in (0, 1] and
- * x = cot sigma */
+/* The sphere form factor below (mf_sphere_form_factor) from co = cos omega
+ * in [-1, 1], s2 = sin^2 sigma in (0, 1] and x = cot sigma */
 MF_INLINE mf_real mf__sphere_form_factor_cs(mf_real co, mf_real s2, mf_real x)
 {
     mf_real so = MF_SQRT(MF_R(1.0) - co * co), y, z;
@@ -515,6 +509,12 @@ MF_INLINE mf_real mf__sphere_form_factor_cs(mf_real co, mf_real s2, mf_real x)
     z = so * MF_SQRT(MF_R(1.0) - y * y);
     return mf_max(((co * MF_ACOS(y) - x * z) * s2 + MF_ATAN2(z, x)) * MF_INV_PI, MF_R(0.0));
 }
+/* Cosine form factor of a uniform sphere light of angular radius sigma whose
+ * center lies at angle omega from the normal, clipped at the horizon
+ * (Snyder 1996), from F = its vector form factor: |F| = sin^2 sigma,
+ * F.z / |F| = cos omega. Applied to the vector form factor of a polygon or a
+ * disk, it is the sphere approximation of their horizon-clipped form factor
+ * (Hill & Heitz 2016). */
 MF_INLINE mf_real mf_sphere_form_factor(mf_vec3 F)
 {
     mf_real len = MF_SQRT(mf_dot(F, F)), s2;
