@@ -14,7 +14,7 @@ $CC -std=c99 -O3 -march=native $EXTRA -I. bench/bench.c -o $B/o3 -lm
 $CC -std=c99 -O2 -DMF_BENCH_BIG_TU $EXTRA -I. bench/bench.c -o $B/big -lm
 r=1
 while [ $r -le "$ROUNDS" ]; do
-  for v in o2 o3 big; do ./$B/$v core | awk -v v=$v -v r=$r '$1 == "bench" { print v, r, $2, $3 }'; done
+  for v in o2 o3 big; do ./$B/$v core | awk -v v=$v -v r=$r '$1 == "bench" && $3 ~ /^[0-9.]+$/ { print v, r, $2, $3 }'; done
   r=$((r + 1))
 done > $B/raw.txt
 awk '
