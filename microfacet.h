@@ -5783,6 +5783,7 @@ typedef struct mf__ibm_fp {
     int mode, tx, ty;          /* POINT: the texel */
     int direct;                /* sum the covered texels directly (Eq. 5.2) */
     int few;                   /* direct, and A is small (bounding box <= 16 texels) or thin */
+    int tiny;                  /* few, small, neither thin nor axis-aligned: texel areas row by row */
     int bx0, by0, bx1, by1;    /* direct: texels [bx0, bx1) x [by0, by1) (unwrapped) hold A */
     int rect;                  /* axis-aligned: every piece is a rectangle */
     int row0, row1;            /* period rows touched */
@@ -5843,14 +5844,15 @@ MF_INLINE int mf__ibm_clip_line(const mf_real *xi, const mf_real *yi, int n, mf_
     return m;
 }
 
-/* Shoelace area of a polygon (counterclockwise: positive). */
-MF_INLINE mf_real mf__ibm_shoelace(const mf_real *x, const mf_real *y, int n)
+/* Shoelace area of a polygon (counterclockwise: positive), its coordinates
+ * taken about (ox, oy). */
+MF_INLINE mf_real mf__ibm_shoelace(const mf_real *x, const mf_real *y, int n, mf_real ox, mf_real oy)
 {
     mf_real s = MF_R(0.0);
     int i;
     for (i = 0; i < n; ++i) {
         int k = i + 1 == n ? 0 : i + 1;
-        s += x[i] * y[k] - x[k] * y[i];
+        s += (x[i] - ox) * (y[k] - oy) - (x[k] - ox) * (y[i] - oy);
     }
     return MF_R(0.5) * s;
 }
@@ -5897,7 +5899,7 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
     int row, pieces = 0, edges_ok;
     p->mode = MF__IBM_NONE;
-    p->direct = p->few = 0;
+    p->direct = p->few = p->tiny = 0;
     p->full = MF_R(0.0);
     if (!f) return;
     /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
@@ -5965,15 +5967,17 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     p->direct = p->full == MF_R(0.0) && MF_R(4.0) * ex * ey <= (mf_real)MF_IBM_DIRECT_TEXELS;
     /* a few texels, or thin: their clipped areas give |A| (see mf__ibm_weights) */
     p->few = p->direct && (MF_R(4.0) * ex * ey <= MF_R(16.0) || MF_R(32.0) * p->area <= MF_R(4.0) * ex * ey);
+    p->tiny = p->direct && !p->rect && MF_R(4.0) * ex * ey <= MF_R(16.0) && MF_R(32.0) * p->area > MF_R(4.0) * ex * ey;
     if (p->direct) {
         p->bx0 = (int)MF_FLOOR(p->cx - ex); p->bx1 = (int)MF_CEIL(p->cx + ex);
         p->by0 = (int)MF_FLOOR(p->cy - ey); p->by1 = (int)MF_CEIL(p->cy + ey);
     }
 }
 
-/* The piece of slab (x, y, n) in column `col`, shifted to the first period;
+/* The polygon of the piece of slab (x, y, n) in column `col`, shifted to the
+ * first period: vertices relative to (ox, oy), its texel box and rectangle;
  * 0 if it has no area. */
-MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
+MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
                                  const mf_real *y, int n, mf__ibm_piece *pc)
 {
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, tx[12], ty[12], lx, ly, hx, hy, sx, sy;
@@ -6007,11 +6011,22 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         while (k > 1 && pc->x[k - 1] == pc->x[0] && pc->y[k - 1] == pc->y[0]) --k;
         m = k;
     }
-    if (m < 3 || !(mf__ibm_shoelace(pc->x, pc->y, m) > MF_R(0.0))) return 0;
+    if (m < 3 || !(mf__ibm_shoelace(pc->x, pc->y, m, MF_R(0.0), MF_R(0.0)) > MF_R(0.0))) return 0;
     pc->n = m;
     pc->rect = p->rect;
     pc->rx0 = lx - (mf_real)pc->ox; pc->rx1 = hx - (mf_real)pc->ox;
     pc->ry0 = ly - (mf_real)pc->oy; pc->ry1 = hy - (mf_real)pc->oy;
+    return 1;
+}
+
+/* The whole piece: its polygon (mf__ibm_piece_poly), the unit half-planes of
+ * its edges and the texels wholly inside; 0 if it has no area. */
+MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
+                                 const mf_real *y, int n, mf__ibm_piece *pc)
+{
+    int i, m;
+    if (!mf__ibm_piece_poly(ibm, p, row, col, x, y, n, pc)) return 0;
+    m = pc->n;
     for (i = 0; i < m; ++i) {
         int k = i + 1 == m ? 0 : i + 1;
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
@@ -6105,7 +6120,7 @@ MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
         n = mf__ibm_clip_line(xa, ya, n, pc->ea[cut[i]], pc->eb[cut[i]], cv[i], xb, yb);
         for (k = 0; k < n; ++k) { xa[k] = xb[k]; ya[k] = yb[k]; }
     }
-    return n >= 3 ? mf_max(mf__ibm_shoelace(xa, ya, n), MF_R(0.0)) : MF_R(0.0);
+    return n >= 3 ? mf_max(mf__ibm_shoelace(xa, ya, n, MF_R(0.0), MF_R(0.0)), MF_R(0.0)) : MF_R(0.0);
 }
 
 /* The bins whose weights a query needs: those of the window (cx + dx, cy + dy),
@@ -6163,31 +6178,68 @@ MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf_
     return tot;
 }
 
-/* 1 if a texel of the direct footprint's bounding box (wrapped) is wanted:
- * its bin listed in s, or (s NULL) within the neighbourhood of radius r
- * around bin (cx, cy). An index-only test that spares the clipping (and,
- * for footprints of a few texels, listing the bins) when no texel is. */
-MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, const mf__ibm_set *s, int cx, int cy, int r)
+/* Direct texel sum over a piece of a few texels (Eq. 5.2-5.3), row by row:
+ * the piece cut to each texel row once, that band cut to each texel's
+ * columns and its shoelace taken about the texel's corner (where
+ * mf__ibm_texel_area clips the texel by every edge that cuts it). Returns
+ * the sum of all the texels' areas (the piece's area as they add up). */
+MF_INLINE mf_real mf__ibm_direct_rows(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
 {
-    int x, y, W = ibm->width, H = ibm->height;
-    unsigned int m = (1u << ibm->axis_bits) - 1u;
+    mf_real tot = MF_R(0.0), ta[12], tb[12], bx[12], by[12];
+    int ty;
+    for (ty = pc->by0; ty < pc->by1; ++ty) {
+        mf_real Y = (mf_real)(ty - pc->oy), lo, hi;
+        int n = mf__ibm_clip_axis(pc->x, pc->y, pc->n, 1, Y, MF_R(1.0), ta, tb), i, tx, x0, x1;
+        n = mf__ibm_clip_axis(ta, tb, n, 1, Y + MF_R(1.0), MF_R(-1.0), bx, by);
+        if (n < 3) continue;
+        lo = hi = bx[0];
+        for (i = 1; i < n; ++i) { lo = mf_min(lo, bx[i]); hi = mf_max(hi, bx[i]); }
+        x0 = pc->ox + (int)MF_FLOOR(lo); x1 = pc->ox + (int)MF_CEIL(hi);
+        if (x0 < pc->bx0) x0 = pc->bx0;
+        if (x1 > pc->bx1) x1 = pc->bx1;
+        for (tx = x0; tx < x1; ++tx) {
+            mf_real X = (mf_real)(tx - pc->ox), xa[12], ya[12], xb[12], yb[12], a;
+            int m = mf__ibm_clip_axis(bx, by, n, 0, X, MF_R(1.0), xa, ya), k;
+            m = mf__ibm_clip_axis(xa, ya, m, 0, X + MF_R(1.0), MF_R(-1.0), xb, yb);
+            if (m < 3) continue;
+            a = mf__ibm_shoelace(xb, yb, m, X, Y);
+            if (!(a > MF_R(0.0))) continue;
+            tot += a;
+            k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)ibm->width + (size_t)tx, ibm->bin_bits));
+            if (k >= 0) s->w[k] += a;
+        }
+    }
+    return tot;
+}
+
+/* The direct footprint's bounding box (wrapped), by its texels' bins: with
+ * `collect` 0, 1 if one of them is listed in s (an index-only test that
+ * spares the clipping when no texel is wanted); with `collect` 1, lists in s
+ * (empty, centered on the half vector's bin) every bin of the box within its
+ * radius, r(r+1), and returns how many: for a footprint of a few texels the
+ * only bins that can have weight, found without reading the index. */
+MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s, int collect)
+{
+    int x, y, W = ibm->width, H = ibm->height, r = s->r;
     for (y = p->by0; y < p->by1; ++y) {
         int ty = y >= 0 && y < H ? y : y % H;   /* no division inside the period */
         if (ty < 0) ty += H;
         for (x = p->bx0; x < p->bx1; ++x) {
-            int tx = x >= 0 && x < W ? x : x % W, dx, dy;
+            int tx = x >= 0 && x < W ? x : x % W, k, dx, dy;
             unsigned int v;
             if (tx < 0) tx += W;
             v = mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits);
-            if (s) {
+            if (!collect) {
                 if (mf__ibm_set_find(ibm, s, v) >= 0) return 1;
                 continue;
             }
-            dx = (int)(v & m) - cx; dy = (int)(v >> ibm->axis_bits) - cy;
-            if (dx * dx + dy * dy <= r * (r + 1)) return 1;
+            dx = (int)(v & ((1u << ibm->axis_bits) - 1u)) - s->cx; dy = (int)(v >> ibm->axis_bits) - s->cy;
+            if (dx * dx + dy * dy > r * (r + 1)) continue;
+            k = (dy + r) * s->side + dx + r;
+            if (s->slot[k] < 0) mf__ibm_set_add(s, dx, dy, (s->cx + dx) + ibm->res * (s->cy + dy));
         }
     }
-    return 0;
+    return s->n;
 }
 
 /* first index in [s, e) whose Morton code has bit `bit` set: a linear scan
@@ -6329,7 +6381,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
         if (texels < 8.0 * (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
     }
-    if (direct && !mf__ibm_direct_any(ibm, p, s, 0, 0, 0)) return;   /* no wanted texel: all 0 */
+    if (direct && !mf__ibm_direct_any(ibm, p, s, 0)) return;   /* no wanted texel: all 0 */
     tot = p->full * (mf_real)ibm->width * (mf_real)ibm->height;
     {
         mf_real xs[12], ys[12], c0, c1, f0, f1, col;
@@ -6341,8 +6393,13 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
             mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
             for (col = c0; col <= c1; col += MF_R(1.0)) {
                 if (col >= f0 && col <= f1) continue;
+                if (p->tiny) {   /* the polygon is all the row sums need */
+                    if (!mf__ibm_piece_poly(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
+                    dtot += mf__ibm_direct_rows(ibm, &pc, s);
+                    continue;
+                }
                 if (!mf__ibm_piece_make(ibm, p, row, (int)col, xs, ys, n, &pc)) continue;
-                tot += mf__ibm_shoelace(pc.x, pc.y, pc.n);
+                tot += mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));
                 if (direct) dtot += mf__ibm_direct(ibm, &pc, s, p->few);
                 else
                     for (i = 0; i < s->n; i += MF_IBM_BATCH)
@@ -6454,10 +6511,10 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
-    /* a footprint of a few texels: their bins first (index only) */
-    if (p.mode == MF__IBM_EXACT && p.few && !mf__ibm_direct_any(ibm, &p, (const mf__ibm_set *)0, cx, cy, r)) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
-    {   /* the non-empty bins of the neighbourhood (none, or none of their
+    /* a footprint of a few texels: the bins of its texels */
+    if (p.mode == MF__IBM_EXACT && p.few) { if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0); }
+    else {   /* the non-empty bins of the neighbourhood (none, or none of their
          * texels near the footprint: 0); for a footprint of many texels
          * only those that face wo (and wi when only f is wanted), which
          * spares their traversal (small ones are checked after their weights) */
@@ -6468,7 +6525,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
                 if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
                 if (!mf__ibm_bin_empty(ibm, j)) { near[nb] = j; ndx[nb] = dx; ndy[nb] = dy; ++nb; }
             }
-        if (nb == 0 || (!p.few && mf__ibm_far(ibm, f, near, nb))) return MF_R(0.0);
+        if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
         for (i = 0; i < nb; ++i) {
             if (p.mode == MF__IBM_EXACT && !p.direct) {
                 mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
