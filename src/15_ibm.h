@@ -879,7 +879,7 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
             if (s->slot[k] < 0) mf__ibm_set_add(s, dx, dy, (s->cx + dx) + ibm->res * (s->cy + dy));
         }
     }
-    return s->n;
+    return collect ? s->n : 0;
 }
 
 /* first index in [s, e) whose Morton code has bit `bit` set: a linear scan
