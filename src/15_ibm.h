@@ -791,8 +791,10 @@ MF_INLINE void mf__ibm_set_add(mf__ibm_set *s, int dx, int dy, int j)
 /* list entry of a bin map value (ix | iy << s), or -1 */
 MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, const mf__ibm_set *s, unsigned int v)
 {
-    int ix = (int)(v & ((1u << ibm->axis_bits) - 1u)), iy = (int)(v >> ibm->axis_bits);
-    int dx = ix - s->cx, dy = iy - s->cy;
+    int ix, iy, dx, dy;
+    if (s->r == 0) return v == ((unsigned int)s->cx | ((unsigned int)s->cy << ibm->axis_bits)) ? s->slot[0] : -1;
+    ix = (int)(v & ((1u << ibm->axis_bits) - 1u)); iy = (int)(v >> ibm->axis_bits);
+    dx = ix - s->cx; dy = iy - s->cy;
     if (dx < -s->r || dx > s->r || dy < -s->r || dy > s->r) return -1;
     return s->slot[(dy + s->r) * s->side + dx + s->r];
 }
@@ -1078,6 +1080,22 @@ MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *b
         if (tot > 48u) return 0;
     }
     cx = f->u * W - MF_R(0.5); cy = f->v * H - MF_R(0.5);
+    cx -= W * MF_FLOOR(cx / W); cy -= H * MF_FLOOR(cy / H);   /* into the first period */
+    if (cx >= ex && cx + ex + MF_R(1.0) < W && cy >= ey && cy + ey + MF_R(1.0) < H) {
+        /* the box does not wrap: compare the Morton codes' x and y bits with
+         * its corners' (masked, they order like x and y), no decoding */
+        unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
+        unsigned int x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)(cx - ex), 0u), x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)(cx + ex) + 1u, 0u);
+        unsigned int y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)(cy - ey)), y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)(cy + ey) + 1u);
+        for (i = 0; i < nb; ++i) {
+            n = mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
+            for (q = 0u; q < n; ++q) {
+                unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & xm, my = c & ym;
+                if (mx >= x0 && mx <= x1 && my >= y0 && my <= y1) return 0;
+            }
+        }
+        return 1;
+    }
     for (i = 0; i < nb; ++i) {
         n = mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
         for (q = 0u; q < n; ++q) {
