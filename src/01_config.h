@@ -186,6 +186,13 @@ typedef float mf_real;
 #ifndef MFDEF
 #define MFDEF extern
 #endif
+/* MF__PREFETCH(p): a hint that memory at p is read soon; no-op where the
+ * compiler has no builtin for it and in device code. */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
+#define MF__PREFETCH(p) __builtin_prefetch((const void *)(p))
+#else
+#define MF__PREFETCH(p) ((void)0)
+#endif
 /* MF_COLD: functions that device code may call but that host includers need
  * not compile (numerical samplers, tabulated and IBM queries, the generic
  * dispatch of the rarer kinds). Host builds declare them here and define them

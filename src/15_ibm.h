@@ -1023,6 +1023,16 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
         if (texels < 8.0 * (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
     }
+    if (direct && p->bx0 >= 0 && p->bx1 <= ibm->width && p->by0 >= 0 && p->by1 <= ibm->height) {
+        /* start the loads of the box's bin-map rows together (the scan
+         * would take their cache misses one after another) */
+        int y;
+        for (y = p->by0; y < p->by1; ++y) {
+            size_t j = (size_t)y * (size_t)ibm->width;
+            MF__PREFETCH(ibm->data + ibm->bin_at + (((j + (size_t)p->bx0) * (size_t)ibm->bin_bits) >> 5));
+            MF__PREFETCH(ibm->data + ibm->bin_at + (((j + (size_t)p->bx1 - 1u) * (size_t)ibm->bin_bits) >> 5));
+        }
+    }
     if (direct && !mf__ibm_direct_any(ibm, p, s, 0)) return;   /* no wanted texel: all 0 */
     tot = p->full * (mf_real)ibm->width * (mf_real)ibm->height;
     {
