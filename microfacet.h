@@ -6437,6 +6437,80 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
 
+/* The footprint's bounding box widened by 1.5 texels, [x0, x1] x [y0, y1]
+ * (inclusive texel indices), when it is finite, narrower than a quarter
+ * period and does not wrap (ok = 1); else ok = 0. */
+typedef struct mf__ibm_box { int ok, x0, y0, x1, y1; } mf__ibm_box;
+
+MF_INLINE mf__ibm_box mf__ibm_near_box(const mf_ibm *ibm, const mf_footprint *f)
+{
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cx, cy, ex, ey;
+    mf__ibm_box b;
+    b.ok = 0; b.x0 = b.y0 = b.x1 = b.y1 = 0;
+    if (!f || !mf__finite_bits(f->u) || !mf__finite_bits(f->v) || !mf__finite_bits(f->ax) || !mf__finite_bits(f->ay) ||
+        !mf__finite_bits(f->bx) || !mf__finite_bits(f->by) || !(MF_FABS(f->u) < MF_R(4.0)) || !(MF_FABS(f->v) < MF_R(4.0)))
+        return b;
+    ex = MF_R(0.5) * (MF_FABS(f->ax) + MF_FABS(f->bx)) * W + MF_R(1.5);
+    ey = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * H + MF_R(1.5);
+    if (!(ex < MF_R(0.25) * W) || !(ey < MF_R(0.25) * H)) return b;
+    cx = f->u * W - MF_R(0.5); cy = f->v * H - MF_R(0.5);
+    cx -= W * MF_FLOOR(cx / W); cy -= H * MF_FLOOR(cy / H);   /* into the first period */
+    if (!(cx >= ex && cx + ex + MF_R(1.0) < W && cy >= ey && cy + ey + MF_R(1.0) < H)) return b;
+    b.x0 = (int)(cx - ex); b.x1 = (int)(cx + ex) + 1; b.y0 = (int)(cy - ey); b.y1 = (int)(cy + ey) + 1;
+    b.ok = 1;
+    return b;
+}
+
+/* Node size 2^lx x 2^ly of the kd-trees at level l: the larger side split
+ * first, x on ties (the order of the Morton code's bits). */
+MF_INLINE void mf__ibm_node_dims(const mf_ibm *ibm, int l, int *lx, int *ly)
+{
+    int kx = ibm->kx, ky = ibm->ky, d = kx > ky ? kx - ky : ky - kx, m;
+    if (l <= d) { *lx = kx > ky ? kx - l : kx; *ly = kx > ky ? ky : ky - l; return; }
+    m = l - d;   /* then alternately, x first */
+    *lx = (kx < ky ? kx : ky) - (m + 1) / 2;
+    *ly = (kx < ky ? kx : ky) - m / 2;
+}
+
+/* 1 if bin j (its stored kd-tree top: k levels, boundaries at tab) has no
+ * texel in box b: the nodes of the deepest stored level at which the box
+ * meets at most 4, their texel counts from their boundaries (index reads
+ * only). 0 when it may have one, or the bin stores no levels. */
+MF_INLINE int mf__ibm_box_empty(const mf_ibm *ibm, unsigned int tab, int k, const mf__ibm_box *b)
+{
+    const unsigned int *pos = ibm->data + ibm->pos_at;
+    int l, lx = 0, ly = 0, gx, gy, d = ibm->kx + ibm->ky;
+    if (!b->ok || k <= 0) return 0;
+    for (l = k; l > 0; --l) {
+        mf__ibm_node_dims(ibm, l, &lx, &ly);
+        if (((b->x1 >> lx) - (b->x0 >> lx) + 1) * ((b->y1 >> ly) - (b->y0 >> ly) + 1) <= 4) break;
+    }
+    if (l == 0) return 0;
+    for (gy = b->y0 >> ly; gy <= b->y1 >> ly; ++gy)
+        for (gx = b->x0 >> lx; gx <= b->x1 >> lx; ++gx) {
+            unsigned int pre = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)gx << lx, (unsigned int)gy << ly) >> (d - l);
+            if (mf__ibm_get(pos, (size_t)tab + ((size_t)pre << (k - l)), ibm->list_bits) !=
+                mf__ibm_get(pos, (size_t)tab + ((size_t)(pre + 1u) << (k - l)), ibm->list_bits))
+                return 0;
+        }
+    return 1;
+}
+
+/* Bin j against footprint f: 0 empty, 1 no texel near the footprint
+ * (mf__ibm_box_empty), 2 it may have some. *b is f's box, computed here on
+ * first need (b->ok < 0 before). */
+MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, int j, const mf_footprint *f, mf__ibm_box *b)
+{
+    unsigned int s0 = mf__ibm_off(ibm, j), s1 = mf__ibm_off(ibm, j + 1), base, tab;
+    int k;
+    if (s0 == s1) return 0;
+    if (s1 - s0 < (unsigned int)MF_IBM_TREE_MIN) return 2;   /* no stored levels */
+    if (b->ok < 0) *b = mf__ibm_near_box(ibm, f);
+    if (!b->ok) return 2;
+    mf__ibm_bin_info(ibm, j, &base, &tab, &k);
+    return mf__ibm_box_empty(ibm, tab, k, b) ? 1 : 2;
+}
+
 /* 1 if no texel of the bins can meet the footprint, decided before any
  * footprint work for bins of few texels in all (at most 48): each texel
  * against the footprint's bounding box widened by a texel, across the
@@ -6492,7 +6566,11 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     mf__ibm_fp p;
     mf__ibm_set s;
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
-    if (mf__ibm_bin_empty(ibm, bin) || mf__ibm_far(ibm, f, &bin, 1)) return MF_R(0.0);   /* no footprint work */
+    {
+        mf__ibm_box nb;
+        nb.ok = -1;
+        if (mf__ibm_bin_near(ibm, bin, f, &nb) < 2 || mf__ibm_far(ibm, f, &bin, 1)) return MF_R(0.0);   /* no footprint work */
+    }
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
@@ -6505,24 +6583,31 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
 {
     mf__ibm_fp p;
     mf__ibm_set s;
-    int dx, dy, r, b, cx, cy, i;
+    mf__ibm_box nb;
+    int dx, dy, r, b, cx, cy, i, c, n = 0;
     if (!ibm || !ibm->data || center_bin < 0 || center_bin >= ibm->res * ibm->res) return 0;
     r = ibm->radius; b = ibm->res; cx = center_bin % b; cy = center_bin / b;
     mf__ibm_set_init(&s, cx, cy, r);
+    nb.ok = -1;
+    /* every non-empty bin is listed; those whose stored kd-tree top puts no
+     * texel near the footprint get weight 0 without a traversal */
     for (dy = -r; dy <= r; ++dy)
         for (dx = -r; dx <= r; ++dx) {
             int j = (cx + dx) + b * (cy + dy);
             if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-            if (!mf__ibm_bin_empty(ibm, j)) mf__ibm_set_add(&s, dx, dy, j);
+            c = mf__ibm_bin_near(ibm, j, f, &nb);
+            if (c == 0) continue;
+            bins[n] = j; weights[n] = MF_R(0.0); ++n;
+            if (c == 2) mf__ibm_set_add(&s, dx, dy, j);
         }
-    if (s.n == 0) return 0;   /* an empty neighbourhood: no footprint work */
-    if (mf__ibm_far(ibm, f, s.bin, s.n)) { for (i = 0; i < s.n; ++i) s.w[i] = MF_R(0.0); }
-    else {
-        mf__ibm_footprint(ibm, f, &p);
-        mf__ibm_weights(ibm, &p, &s);
+    if (s.n == 0 || mf__ibm_far(ibm, f, s.bin, s.n)) return n;   /* no footprint work */
+    mf__ibm_footprint(ibm, f, &p);
+    mf__ibm_weights(ibm, &p, &s);
+    for (i = 0; i < n; ++i) {
+        int k = s.slot[(bins[i] / b - cy + r) * s.side + bins[i] % b - cx + r];
+        if (k >= 0) weights[i] = s.w[k];
     }
-    for (i = 0; i < s.n; ++i) { bins[i] = s.bin[i]; weights[i] = s.w[i]; }
-    return s.n;
+    return n;
 }
 
 /* The lobes of the bins around beta(h): for each non-empty bin j of the
@@ -6554,11 +6639,13 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
          * only those that face wo (and wi when only f is wanted), which
          * spares their traversal (small ones are checked after their weights) */
         int nb = 0, near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW];
+        mf__ibm_box box;
+        box.ok = -1;
         for (dy = -r; dy <= r; ++dy)
             for (dx = -r; dx <= r; ++dx) {
                 int j = (cx + dx) + b * (cy + dy);
                 if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-                if (!mf__ibm_bin_empty(ibm, j)) { near[nb] = j; ndx[nb] = dx; ndy[nb] = dy; ++nb; }
+                if (mf__ibm_bin_near(ibm, j, f, &box) == 2) { near[nb] = j; ndx[nb] = dx; ndy[nb] = dy; ++nb; }
             }
         if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
         for (i = 0; i < nb; ++i) {
