@@ -1147,6 +1147,26 @@ MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, int j, const mf_footprint *f, 
     return mf__ibm_box_empty(ibm, tab, k, b) ? 1 : 2;
 }
 
+/* The non-empty bins of the window around bin (cx, cy) within the radius,
+ * dx^2 + dy^2 <= r(r+1), in scan order: bin j[i] at (dx[i], dy[i]) and
+ * mf__ibm_bin_near's verdict near[i] (1: none of its texels near the
+ * footprint, 2: maybe); returns how many. */
+MF_INLINE int mf__ibm_window(const mf_ibm *ibm, const mf_footprint *f, int cx, int cy, int *j, int *dx, int *dy, int *near)
+{
+    mf__ibm_box box;
+    int r = ibm->radius, b = ibm->res, x, y, n = 0;
+    box.ok = -1;
+    for (y = -r; y <= r; ++y)
+        for (x = -r; x <= r; ++x) {
+            int k = (cx + x) + b * (cy + y), c;
+            if (x * x + y * y > r * (r + 1) || cx + x < 0 || cx + x >= b || cy + y < 0 || cy + y >= b) continue;
+            c = mf__ibm_bin_near(ibm, k, f, &box);
+            if (c == 0) continue;
+            j[n] = k; dx[n] = x; dy[n] = y; near[n] = c; ++n;
+        }
+    return n;
+}
+
 /* 1 if no texel of the bins can meet the footprint, decided before any
  * footprint work for bins of few texels in all (at most 48): each texel
  * against the footprint's bounding box widened by a texel, across the
@@ -1219,28 +1239,22 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
 {
     mf__ibm_fp p;
     mf__ibm_set s;
-    mf__ibm_box nb;
-    int dx, dy, r, b, cx, cy, i, c, n = 0;
+    int dx[MF_IBM_MAX_WINDOW], dy[MF_IBM_MAX_WINDOW], near[MF_IBM_MAX_WINDOW], cx, cy, i, n;
     if (!ibm || !ibm->data || center_bin < 0 || center_bin >= ibm->res * ibm->res) return 0;
-    r = ibm->radius; b = ibm->res; cx = center_bin % b; cy = center_bin / b;
-    mf__ibm_set_init(&s, cx, cy, r);
-    nb.ok = -1;
+    cx = center_bin % ibm->res; cy = center_bin / ibm->res;
+    mf__ibm_set_init(&s, cx, cy, ibm->radius);
     /* every non-empty bin is listed; those whose stored kd-tree top puts no
      * texel near the footprint get weight 0 without a traversal */
-    for (dy = -r; dy <= r; ++dy)
-        for (dx = -r; dx <= r; ++dx) {
-            int j = (cx + dx) + b * (cy + dy);
-            if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-            c = mf__ibm_bin_near(ibm, j, f, &nb);
-            if (c == 0) continue;
-            bins[n] = j; weights[n] = MF_R(0.0); ++n;
-            if (c == 2) mf__ibm_set_add(&s, dx, dy, j);
-        }
+    n = mf__ibm_window(ibm, f, cx, cy, bins, dx, dy, near);
+    for (i = 0; i < n; ++i) {
+        weights[i] = MF_R(0.0);
+        if (near[i] == 2) mf__ibm_set_add(&s, dx[i], dy[i], bins[i]);
+    }
     if (s.n == 0 || mf__ibm_far(ibm, f, s.bin, s.n)) return n;   /* no footprint work */
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < n; ++i) {
-        int k = s.slot[(bins[i] / b - cy + r) * s.side + bins[i] % b - cx + r];
+        int k = s.slot[(dy[i] + s.r) * s.side + dx[i] + s.r];
         if (k >= 0) weights[i] = s.w[k];
     }
     return n;
@@ -1261,7 +1275,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_fp p;
     mf_real gx = MF_R(-1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
     mf_vec3 h;
-    int dx, dy, r = ibm->radius, b = ibm->res, cx, cy, i;
+    int r = ibm->radius, b = ibm->res, cx, cy, i;
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
@@ -1274,15 +1288,10 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
          * texels near the footprint: 0); for a footprint of many texels
          * only those that face wo (and wi when only f is wanted), which
          * spares their traversal (small ones are checked after their weights) */
-        int nb = 0, near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW];
-        mf__ibm_box box;
-        box.ok = -1;
-        for (dy = -r; dy <= r; ++dy)
-            for (dx = -r; dx <= r; ++dx) {
-                int j = (cx + dx) + b * (cy + dy);
-                if (dx * dx + dy * dy > r * (r + 1) || cx + dx < 0 || cx + dx >= b || cy + dy < 0 || cy + dy >= b) continue;
-                if (mf__ibm_bin_near(ibm, j, f, &box) == 2) { near[nb] = j; ndx[nb] = dx; ndy[nb] = dy; ++nb; }
-            }
+        int nb = 0, nw, near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW], verdict[MF_IBM_MAX_WINDOW];
+        nw = mf__ibm_window(ibm, f, cx, cy, near, ndx, ndy, verdict);
+        for (i = 0; i < nw; ++i)
+            if (verdict[i] == 2) { near[nb] = near[i]; ndx[nb] = ndx[i]; ndy[nb] = ndy[i]; ++nb; }
         if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
         for (i = 0; i < nb; ++i) {
             if (p.mode == MF__IBM_EXACT && !p.direct) {
