@@ -1132,12 +1132,13 @@ MF_INLINE int mf__ibm_box_empty(const mf_ibm *ibm, unsigned int tab, int k, cons
     return 1;
 }
 
-/* Bin j against footprint f: 0 empty, 1 no texel near the footprint
+/* Bin j (its block [s0, s1) of the lists: mf__ibm_off of j and j + 1)
+ * against footprint f: 0 empty, 1 no texel near the footprint
  * (mf__ibm_box_empty), 2 it may have some. *b is f's box, computed here on
  * first need (b->ok < 0 before). */
-MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, int j, const mf_footprint *f, mf__ibm_box *b)
+MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, int j, unsigned int s0, unsigned int s1, const mf_footprint *f, mf__ibm_box *b)
 {
-    unsigned int s0 = mf__ibm_off(ibm, j), s1 = mf__ibm_off(ibm, j + 1), base, tab;
+    unsigned int base, tab;
     int k;
     if (s0 == s1) return 0;
     if (s1 - s0 < (unsigned int)MF_IBM_TREE_MIN) return 2;   /* no stored levels */
@@ -1156,14 +1157,24 @@ MF_INLINE int mf__ibm_window(const mf_ibm *ibm, const mf_footprint *f, int cx, i
     mf__ibm_box box;
     int r = ibm->radius, b = ibm->res, x, y, n = 0;
     box.ok = -1;
-    for (y = -r; y <= r; ++y)
-        for (x = -r; x <= r; ++x) {
+    for (y = -r; y <= r; ++y) {
+        unsigned int s0, s1;
+        int x0 = -r, x1 = r;
+        if (cy + y < 0 || cy + y >= b) continue;
+        while (x0 * x0 + y * y > r * (r + 1)) { ++x0; --x1; }   /* the row's cells within the radius */
+        if (cx + x0 < 0) x0 = -cx;
+        if (cx + x1 >= b) x1 = b - 1 - cx;
+        if (x1 < x0) continue;
+        /* neighbours in a row share their block boundary: one read per bin */
+        s1 = mf__ibm_off(ibm, (cx + x0) + b * (cy + y));
+        for (x = x0; x <= x1; ++x) {
             int k = (cx + x) + b * (cy + y), c;
-            if (x * x + y * y > r * (r + 1) || cx + x < 0 || cx + x >= b || cy + y < 0 || cy + y >= b) continue;
-            c = mf__ibm_bin_near(ibm, k, f, &box);
+            s0 = s1; s1 = mf__ibm_off(ibm, k + 1);
+            c = mf__ibm_bin_near(ibm, k, s0, s1, f, &box);
             if (c == 0) continue;
             j[n] = k; dx[n] = x; dy[n] = y; near[n] = c; ++n;
         }
+    }
     return n;
 }
 
@@ -1225,7 +1236,8 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     {
         mf__ibm_box nb;
         nb.ok = -1;
-        if (mf__ibm_bin_near(ibm, bin, f, &nb) < 2 || mf__ibm_far(ibm, f, &bin, 1)) return MF_R(0.0);   /* no footprint work */
+        if (mf__ibm_bin_near(ibm, bin, mf__ibm_off(ibm, bin), mf__ibm_off(ibm, bin + 1), f, &nb) < 2 || mf__ibm_far(ibm, f, &bin, 1))
+            return MF_R(0.0);   /* no footprint work */
     }
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
