@@ -431,6 +431,18 @@ static void test_weights(void)
     check_weights("smooth 48x40 alpha 0.1", s, 48, 40, 0.1, 70, 21);
     check_weights("smooth 48x40 alpha 0.02", s, 48, 40, 0.02, 35, 22);
     check_weights("flakes 64x64 alpha 0.01", fl, 64, 64, 0.01, 35, 23);
+    {   /* bins large enough for stored kd-tree levels, footprints small
+         * enough for the early exit on them (mf__ibm_box_empty): square and
+         * non-square maps, whose node shapes alternate from the first
+         * level or only after the longer side has been halved */
+        mf_real *s2 = map_smooth(256, 64, 1.0, 13), *s3 = map_smooth(1024, 16, 1.0, 15), *f2 = map_flakes(128, 128, 4, 0.05, 14);
+        check_weights("smooth 256x64 alpha 0.3", s2, 256, 64, 0.3, 60, 24);
+        check_weights("smooth 1024x16 alpha 0.3", s3, 1024, 16, 0.3, 60, 26);
+        check_weights("flakes 128x128 alpha 0.2", f2, 128, 128, 0.2, 60, 25);
+        free(s2);
+        free(s3);
+        free(f2);
+    }
     /* degenerate: zero area and NaN edges -> the texel at the center */
     mf_ibm_build(&ibm, s, 48, 40, MF_R(0.1));
     {
