@@ -3727,8 +3727,12 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
 /* a node of at most MF_IBM_LEAF texels is still split while they are sparse
  * (its box holds over 2^MF__IBM_SPARSE_BITS cells per texel) and more than
  * MF__IBM_LEAF_MIN: its children are likely inside or outside the piece */
+#ifndef MF__IBM_LEAF_MIN
 #define MF__IBM_LEAF_MIN 4
+#endif
+#ifndef MF__IBM_SPARSE_BITS
 #define MF__IBM_SPARSE_BITS 3
+#endif
 
 /* Parallelogram footprint in texture space, tiled with period 1: center
  * (u, v), edges a = (ax, ay), b = (bx, by); corners (u,v) +- a/2 +- b/2. Texel
@@ -6257,7 +6261,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     int lev[MF_IBM_BATCH];
     mf_real frac[MF_IBM_BATCH];
     const unsigned int *pos = ibm->data + ibm->pos_at;
-    int t = 1, i, depth = ibm->kx + ibm->ky;
+    int t = 1, top = 2, i, depth = ibm->kx + ibm->ky, jump = 1;
     /* the piece's texel box in Morton code: the x and y bits of a code,
      * masked, compare like x and y themselves */
     unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
@@ -6274,7 +6278,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
      * most S, the texels its box spans, each), with room to spare */
     mf_real margin = MF_R(64.0) * (mf_real)MF_EPS * ((mf_real)(pc->bx1 - pc->ox + pc->by1 - pc->oy) + MF_R(2.0));
     g[1].x0 = 0; g[1].y0 = 0; g[1].lx = ibm->kx; g[1].ly = ibm->ky; g[1].pre = 0u;
-    for (i = 0; i < MF__IBM_STACK + 3; ++i) r[i] = rows[i];
+    r[0] = rows[0]; r[1] = rows[1]; r[2] = rows[2];   /* the rows above: set as reached */
     for (i = 0; i < nb; ++i) {
         unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]);
         r[1][i] = base[i];
@@ -6285,10 +6289,47 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     for (;;) {
         mf__ibm_frame cur = g[t];
         unsigned int *cs = r[t], *ce = r[t - 1], *mm = r[t + 1];
-        int x1 = cur.x0 + (1 << cur.lx), y1 = cur.y0 + (1 << cur.ly), c, any = 0;
+        int x1, y1, c = 2, any = 0;
+        if (jump) {
+            /* down to the least node that holds the texels of every range at
+             * once (codes sorted: the common prefix of the least and the
+             * largest), past the nodes of one child (clustered texels) */
+            unsigned int lo = 0xffffffffu, hi = 0u;
+            jump = 0;
+            for (i = 0; i < nb; ++i)
+                if (cs[i] < ce[i]) {
+                    unsigned int c0 = mf__ibm_get(pos, cs[i], ibm->list_bits), c1 = mf__ibm_get(pos, ce[i] - 1u, ibm->list_bits);
+                    lo = c0 < lo ? c0 : lo;
+                    hi = c1 > hi ? c1 : hi;
+                }
+            if (lo > hi) c = -1;   /* no texel */
+            else {
+                unsigned int d = lo ^ hi;
+                int b = 0, l, dd;
+                if (d >> 16) { b += 16; d >>= 16; }
+                if (d >> 8) { b += 8; d >>= 8; }
+                if (d >> 4) { b += 4; d >>= 4; }
+                if (d >> 2) { b += 2; d >>= 2; }
+                if (d >> 1) { b += 1; d >>= 1; }
+                b += (int)d;   /* bits below the common prefix */
+                if (b < cur.lx + cur.ly) {
+                    /* that node's sides: the larger side splits first, x on ties */
+                    l = depth - b; cur.lx = ibm->kx; cur.ly = ibm->ky; dd = cur.lx - cur.ly;
+                    if (dd > 0) { dd = l < dd ? l : dd; cur.lx -= dd; l -= dd; }
+                    else if (dd < 0) { dd = l < -dd ? l : -dd; cur.ly -= dd; l -= dd; }
+                    cur.lx -= (l + 1) >> 1; cur.ly -= l >> 1;
+                    d = lo >> b;
+                    cur.pre = d;
+                    d = b < 32 ? d << b : 0u;
+                    cur.x0 = (int)(mf__ibm_compact((d & xm & lom) >> 1) | ((d & xm & ~lom) >> kmin));
+                    cur.y0 = (int)(mf__ibm_compact(d & ym & lom) | ((d & ym & ~lom) >> kmin));
+                }
+            }
+        }
+        x1 = cur.x0 + (1 << cur.lx); y1 = cur.y0 + (1 << cur.ly);
         if (x1 > ibm->width) x1 = ibm->width;
         if (y1 > ibm->height) y1 = ibm->height;
-        c = mf__ibm_classify(pc, cur.x0, cur.y0, x1, y1);
+        if (c == 2) c = mf__ibm_classify(pc, cur.x0, cur.y0, x1, y1);
         if (c > 0) {
             for (i = 0; i < nb; ++i) cnt[i] += ce[i] - cs[i];
         } else if (c == 0) {
@@ -6298,7 +6339,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                 unsigned int s = cs[i], e = ce[i];
                 mm[i] = s;
                 if (s >= e) continue;
-                if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
+                if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || nb == 1 || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
                     if (ne < 0) {
                         ne = pc->rect ? 0 : mf__ibm_cut_edges(pc, cur.x0, cur.y0, x1, y1, margin, ek);
                         /* the node within the piece's box and off its inside
@@ -6362,7 +6403,11 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                     r[t] = mm; r[t + 1] = cs;
                     g[t] = right;
                     g[++t] = cur;
-                } else g[t] = any ? cur : right;
+                    if (t + 1 > top) { top = t + 1; r[top] = rows[top]; }
+                } else {
+                    g[t] = any ? cur : right;
+                    jump = 1;
+                }
                 continue;
             }
         }
