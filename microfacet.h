@@ -6334,12 +6334,16 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
             for (i = 0; i < nb; ++i) cnt[i] += ce[i] - cs[i];
         } else if (c == 0) {
             int bit = cur.lx + cur.ly - 1, rany = 0;
+            /* sparse leaves are split further in batches where the node is no
+             * wider than the piece's box (larger ones: the tests on the codes
+             * reject their texels outside it for less) */
+            int sparse = nb > 1 && (1 << cur.lx) <= pc->bx1 - pc->bx0 && (1 << cur.ly) <= pc->by1 - pc->by0;
             int ek[12], ne = -1, box = 1;   /* the edges that may cut the node (leaves; -1: not yet known) */
             for (i = 0; i < nb; ++i) {
                 unsigned int s = cs[i], e = ce[i];
                 mm[i] = s;
                 if (s >= e) continue;
-                if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || nb == 1 || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
+                if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || !sparse || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
                     if (ne < 0) {
                         ne = pc->rect ? 0 : mf__ibm_cut_edges(pc, cur.x0, cur.y0, x1, y1, margin, ek);
                         /* the node within the piece's box and off its inside
