@@ -72,6 +72,15 @@
 #endif
 #define MF__IBM_HEADER 16
 #define MF__IBM_STACK 32
+/* a node of at most MF_IBM_LEAF texels is still split while they are sparse
+ * (its box holds over 2^MF__IBM_SPARSE_BITS cells per texel) and more than
+ * MF__IBM_LEAF_MIN: its children are likely inside or outside the piece */
+#ifndef MF__IBM_LEAF_MIN
+#define MF__IBM_LEAF_MIN 4
+#endif
+#ifndef MF__IBM_SPARSE_BITS
+#define MF__IBM_SPARSE_BITS 3
+#endif
 
 /* Parallelogram footprint in texture space, tiled with period 1: center
  * (u, v), edges a = (ax, ay), b = (bx, by); corners (u,v) +- a/2 +- b/2. Texel
@@ -721,9 +730,11 @@ MF_INLINE int mf__ibm_classify(const mf__ibm_piece *pc, int x0, int y0, int x1, 
         return X0 >= pc->rx0 && X1 <= pc->rx1 && Y0 >= pc->ry0 && Y1 <= pc->ry1 ? 1 : 0;
     }
     for (i = 0; i < pc->n; ++i) {
-        mf_real a = pc->ea[i], b = pc->eb[i];
-        mf_real lo = pc->ec[i] + (a > MF_R(0.0) ? a * X0 : a * X1) + (b > MF_R(0.0) ? b * Y0 : b * Y1);
-        mf_real hi = pc->ec[i] + (a > MF_R(0.0) ? a * X1 : a * X0) + (b > MF_R(0.0) ? b * Y1 : b * Y0);
+        /* the least and largest of a x + b y over the box: the products at
+         * its two x (y) bounds, ordered (rounding keeps their order) */
+        mf_real a = pc->ea[i], b = pc->eb[i], ax0 = a * X0, ax1 = a * X1, by0 = b * Y0, by1 = b * Y1;
+        mf_real lo = pc->ec[i] + mf_min(ax0, ax1) + mf_min(by0, by1);
+        mf_real hi = pc->ec[i] + mf_max(ax0, ax1) + mf_max(by0, by1);
         if (hi <= MF_R(0.0)) return -1;
         if (lo < MF_R(0.0)) in = 0;
     }
@@ -909,8 +920,23 @@ MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned
 typedef struct mf__ibm_frame {
     int x0, y0, lx, ly;
     unsigned int pre;               /* the node's index in its level (its code prefix) */
-    unsigned int s[MF_IBM_BATCH], e[MF_IBM_BATCH];
 } mf__ibm_frame;
+
+/* The edges of a piece that may cut box [x0,x1) x [y0,y1) (texels), listed
+ * in k, their count returned: those whose least value over the box is below
+ * `margin`, a bound on the rounding of the edge functions. Every texel of
+ * the box lies inside the other edges by mf__ibm_texel_area's own tests. */
+MF_INLINE int mf__ibm_cut_edges(const mf__ibm_piece *pc, int x0, int y0, int x1, int y1, mf_real margin, int *k)
+{
+    mf_real X0 = (mf_real)(x0 - pc->ox), X1 = (mf_real)(x1 - pc->ox), Y0 = (mf_real)(y0 - pc->oy), Y1 = (mf_real)(y1 - pc->oy);
+    int i, n = 0;
+    for (i = 0; i < pc->n; ++i) {
+        mf_real a = pc->ea[i], b = pc->eb[i];
+        mf_real lo = pc->ec[i] + (a > MF_R(0.0) ? a * X0 : a * X1) + (b > MF_R(0.0) ? b * Y0 : b * Y1);
+        if (!(lo >= margin)) k[n++] = i;
+    }
+    return n;
+}
 
 /* kd traversal of Sec. 5.4.4 for up to MF_IBM_BATCH bins at once (their trees
  * share the splits): each node is classified against the piece once; inside
@@ -919,83 +945,174 @@ typedef struct mf__ibm_frame {
  * whose texels get exact areas. */
 MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, const int *bins, int nb, mf_real *acc)
 {
-    mf__ibm_frame st[MF__IBM_STACK], cur;
+    /* the current node (g[t]) and the second children still pending on its
+     * path (g[1] .. g[t-1]); a node's ranges are [r[t][i], r[t-1][i]): the
+     * current node starts at row t and each pending one at the row below,
+     * where the node above it ends (r[0]: the bins' ends). A cut node puts
+     * its split in row t+1 and swaps the two rows when both children hold
+     * texels: nothing is copied. */
+    mf__ibm_frame g[MF__IBM_STACK + 2];
+    unsigned int rows[MF__IBM_STACK + 3][MF_IBM_BATCH], *r[MF__IBM_STACK + 3];
     unsigned int cnt[MF_IBM_BATCH], base[MF_IBM_BATCH], tab[MF_IBM_BATCH];
     int lev[MF_IBM_BATCH];
     mf_real frac[MF_IBM_BATCH];
     const unsigned int *pos = ibm->data + ibm->pos_at;
-    int sp = 0, i, depth = ibm->kx + ibm->ky;
+    int t = 1, top = 2, i, depth = ibm->kx + ibm->ky, jump = 1;
     /* the piece's texel box in Morton code: the x and y bits of a code,
      * masked, compare like x and y themselves */
     unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
     unsigned int bx0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->bx0, 0u), bx1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->bx1 - 1u, 0u);
     unsigned int by0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->by0), by1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->by1 - 1u);
     unsigned int ix0 = 1u, ix1 = 0u, iy0 = 1u, iy1 = 0u;   /* the texels wholly inside, likewise (empty: none) */
+    int kmin = ibm->kx < ibm->ky ? ibm->kx : ibm->ky;
+    unsigned int lom = kmin >= 16 ? 0xffffffffu : (1u << (2 * kmin)) - 1u;   /* the interleaved bits */
     if (pc->ix1 > pc->ix0 && pc->iy1 > pc->iy0) {
         ix0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->ix0, 0u); ix1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->ix1 - 1u, 0u);
         iy0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->iy0); iy1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->iy1 - 1u);
     }
-    cur.x0 = 0; cur.y0 = 0; cur.lx = ibm->kx; cur.ly = ibm->ky; cur.pre = 0u;
+    /* rounding bound of the edge functions of the piece's coordinates (at
+     * most S, the texels its box spans, each), with room to spare */
+    mf_real margin = MF_R(64.0) * (mf_real)MF_EPS * ((mf_real)(pc->bx1 - pc->ox + pc->by1 - pc->oy) + MF_R(2.0));
+    g[1].x0 = 0; g[1].y0 = 0; g[1].lx = ibm->kx; g[1].ly = ibm->ky; g[1].pre = 0u;
+    r[0] = rows[0]; r[1] = rows[1]; r[2] = rows[2];   /* the rows above: set as reached */
     for (i = 0; i < nb; ++i) {
         unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]);
-        cur.s[i] = base[i];
-        cur.e[i] = base[i] + nt;
+        r[1][i] = base[i];
+        r[0][i] = base[i] + nt;
         cnt[i] = 0u;
         frac[i] = MF_R(0.0);
     }
     for (;;) {
-        int x1 = cur.x0 + (1 << cur.lx), y1 = cur.y0 + (1 << cur.ly), c, any = 0;
+        mf__ibm_frame cur = g[t];
+        unsigned int *cs = r[t], *ce = r[t - 1], *mm = r[t + 1];
+        int x1, y1, c = 2, any = 0;
+        if (jump) {
+            /* down to the least node that holds the texels of every range at
+             * once (codes sorted: the common prefix of the least and the
+             * largest), past the nodes of one child (clustered texels) */
+            unsigned int lo = 0xffffffffu, hi = 0u;
+            jump = 0;
+            for (i = 0; i < nb; ++i)
+                if (cs[i] < ce[i]) {
+                    unsigned int c0 = mf__ibm_get(pos, cs[i], ibm->list_bits), c1 = mf__ibm_get(pos, ce[i] - 1u, ibm->list_bits);
+                    lo = c0 < lo ? c0 : lo;
+                    hi = c1 > hi ? c1 : hi;
+                }
+            if (lo > hi) c = -1;   /* no texel */
+            else {
+                unsigned int d = lo ^ hi;
+                int b = 0, l, dd;
+                if (d >> 16) { b += 16; d >>= 16; }
+                if (d >> 8) { b += 8; d >>= 8; }
+                if (d >> 4) { b += 4; d >>= 4; }
+                if (d >> 2) { b += 2; d >>= 2; }
+                if (d >> 1) { b += 1; d >>= 1; }
+                b += (int)d;   /* bits below the common prefix */
+                if (b < cur.lx + cur.ly) {
+                    /* that node's sides: the larger side splits first, x on ties */
+                    l = depth - b; cur.lx = ibm->kx; cur.ly = ibm->ky; dd = cur.lx - cur.ly;
+                    if (dd > 0) { dd = l < dd ? l : dd; cur.lx -= dd; l -= dd; }
+                    else if (dd < 0) { dd = l < -dd ? l : -dd; cur.ly -= dd; l -= dd; }
+                    cur.lx -= (l + 1) >> 1; cur.ly -= l >> 1;
+                    d = lo >> b;
+                    cur.pre = d;
+                    d = b < 32 ? d << b : 0u;
+                    cur.x0 = (int)(mf__ibm_compact((d & xm & lom) >> 1) | ((d & xm & ~lom) >> kmin));
+                    cur.y0 = (int)(mf__ibm_compact(d & ym & lom) | ((d & ym & ~lom) >> kmin));
+                }
+            }
+        }
+        x1 = cur.x0 + (1 << cur.lx); y1 = cur.y0 + (1 << cur.ly);
         if (x1 > ibm->width) x1 = ibm->width;
         if (y1 > ibm->height) y1 = ibm->height;
-        c = mf__ibm_classify(pc, cur.x0, cur.y0, x1, y1);
+        if (c == 2) c = mf__ibm_classify(pc, cur.x0, cur.y0, x1, y1);
         if (c > 0) {
-            for (i = 0; i < nb; ++i) cnt[i] += cur.e[i] - cur.s[i];
+            for (i = 0; i < nb; ++i) cnt[i] += ce[i] - cs[i];
         } else if (c == 0) {
-            mf__ibm_frame right;
             int bit = cur.lx + cur.ly - 1, rany = 0;
+            /* sparse leaves are split further in batches where the node is no
+             * wider than the piece's box (larger ones: the tests on the codes
+             * reject their texels outside it for less) */
+            int sparse = nb > 1 && (1 << cur.lx) <= pc->bx1 - pc->bx0 && (1 << cur.ly) <= pc->by1 - pc->by0;
+            int ek[12], ne = -1, box = 1;   /* the edges that may cut the node (leaves; -1: not yet known) */
             for (i = 0; i < nb; ++i) {
-                unsigned int s = cur.s[i], e = cur.e[i];
-                right.s[i] = right.e[i] = 0u;
+                unsigned int s = cs[i], e = ce[i];
+                mm[i] = s;
                 if (s >= e) continue;
-                if (e - s <= (unsigned int)MF_IBM_LEAF || bit < 0) {
+                if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || !sparse || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
+                    if (ne < 0) {
+                        ne = pc->rect ? 0 : mf__ibm_cut_edges(pc, cur.x0, cur.y0, x1, y1, margin, ek);
+                        /* the node within the piece's box and off its inside
+                         * rectangle: the two tests below can be left out */
+                        box = !(cur.x0 >= pc->bx0 && x1 <= pc->bx1 && cur.y0 >= pc->by0 && y1 <= pc->by1 &&
+                                (x1 <= pc->ix0 || cur.x0 >= pc->ix1 || y1 <= pc->iy0 || cur.y0 >= pc->iy1));
+                    }
                     for (; s < e; ++s) {
                         int x, y;
                         mf_real a;
                         unsigned int code = mf__ibm_get(pos, s, ibm->list_bits), cx = code & xm, cy = code & ym;
-                        if (cx < bx0 || cx > bx1 || cy < by0 || cy > by1) continue;   /* outside the piece's box */
-                        if (cx >= ix0 && cx <= ix1 && cy >= iy0 && cy <= iy1) { ++cnt[i]; continue; }   /* wholly inside */
-                        mf__ibm_unmorton(ibm->kx, ibm->ky, code, &x, &y);
+                        if (box) {
+                            if (cx < bx0 || cx > bx1 || cy < by0 || cy > by1) continue;   /* outside the piece's box */
+                            if (cx >= ix0 && cx <= ix1 && cy >= iy0 && cy <= iy1) { ++cnt[i]; continue; }   /* wholly inside */
+                        }
+                        /* mf__ibm_unmorton from the masked codes: the bits
+                         * above the interleaved 2 k are one axis's own */
+                        x = (int)(mf__ibm_compact((cx & lom) >> 1) | ((cx & ~lom) >> kmin));
+                        y = (int)(mf__ibm_compact(cy & lom) | ((cy & ~lom) >> kmin));
+                        if (!pc->rect) {
+                            /* mf__ibm_texel_area's tests, same operations,
+                             * for the edges that may cut the node: a texel
+                             * inside them all counts 1, one outside an edge
+                             * 0; only texels that an edge cuts are clipped */
+                            mf_real X = (mf_real)(x - pc->ox), Y = (mf_real)(y - pc->oy);
+                            int j, cut = 0, out = 0;
+                            for (j = 0; j < ne; ++j) {
+                                int k = ek[j];
+                                mf_real v = pc->ea[k] * X + pc->eb[k] * Y + pc->ec[k];
+                                if (v + pc->ehi[k] <= MF_R(0.0)) { out = 1; break; }
+                                if (v + pc->elo[k] < MF_R(0.0)) cut = 1;
+                            }
+                            if (out) continue;
+                            if (!cut) { ++cnt[i]; continue; }
+                        }
                         a = mf__ibm_texel_area(pc, x, y);
                         if (a >= MF_R(1.0)) ++cnt[i];
                         else frac[i] += a;
                     }
-                    cur.e[i] = cur.s[i];
+                    cs[i] = mm[i] = e;   /* both children empty */
                 } else {
                     /* the split: stored down to level k, else binary search */
                     int l = depth - cur.lx - cur.ly, kk = lev[i];
                     unsigned int m = l < kk ? base[i] + mf__ibm_get(pos, (size_t)tab[i] + (size_t)((2u * cur.pre + 1u) << (kk - l - 1)), ibm->list_bits)
                                             : mf__ibm_split(ibm, s, e, bit);
-                    right.s[i] = m; right.e[i] = e;
-                    cur.e[i] = m;
+                    mm[i] = m;
                     if (m > s) any = 1;
                     if (e > m) rany = 1;
                 }
             }
-            if (bit >= 0) {
+            if (bit >= 0 && (any || rany)) {
+                mf__ibm_frame right;
                 if (cur.lx >= cur.ly) { --cur.lx; right.x0 = cur.x0 + (1 << cur.lx); right.y0 = cur.y0; }
                 else { --cur.ly; right.x0 = cur.x0; right.y0 = cur.y0 + (1 << cur.ly); }
                 right.lx = cur.lx; right.ly = cur.ly;
                 cur.pre *= 2u;
                 right.pre = cur.pre + 1u;
-                if (rany) {
-                    if (any) { if (sp < MF__IBM_STACK) st[sp++] = right; }
-                    else { cur = right; continue; }
+                /* one child: its ranges are the node's (the split at
+                 * an end for every bin) */
+                if (any && rany && t <= MF__IBM_STACK) {   /* (t <= depth + 1 <= 33 always) */
+                    r[t] = mm; r[t + 1] = cs;
+                    g[t] = right;
+                    g[++t] = cur;
+                    if (t + 1 > top) { top = t + 1; r[top] = rows[top]; }
+                } else {
+                    g[t] = any ? cur : right;
+                    jump = 1;
                 }
-                if (any) continue;
+                continue;
             }
         }
-        if (sp == 0) break;
-        cur = st[--sp];
+        if (t == 1) break;
+        --t;
     }
     for (i = 0; i < nb; ++i) acc[i] += (mf_real)cnt[i] + frac[i];
 }
