@@ -1064,16 +1064,26 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                              * for the edges that may cut the node: a texel
                              * inside them all counts 1, one outside an edge
                              * 0; only texels that an edge cuts are clipped */
-                            mf_real X = (mf_real)(x - pc->ox), Y = (mf_real)(y - pc->oy);
-                            int j, cut = 0, out = 0;
+                            mf_real X = (mf_real)(x - pc->ox), Y = (mf_real)(y - pc->oy), vc = MF_R(0.0);
+                            int j, cut = 0, kc = 0, out = 0;
                             for (j = 0; j < ne; ++j) {
                                 int k = ek[j];
                                 mf_real v = pc->ea[k] * X + pc->eb[k] * Y + pc->ec[k];
                                 if (v + pc->ehi[k] <= MF_R(0.0)) { out = 1; break; }
-                                if (v + pc->elo[k] < MF_R(0.0)) cut = 1;
+                                if (v + pc->elo[k] < MF_R(0.0)) { ++cut; kc = k; vc = v; }
                             }
                             if (out) continue;
                             if (!cut) { ++cnt[i]; continue; }
+                            if (cut == 1) {   /* mf__ibm_texel_area's closed form for one cutting edge, its values */
+                                mf_real v4[4];
+                                v4[0] = vc; v4[1] = vc + pc->ea[kc]; v4[2] = vc + pc->ea[kc] + pc->eb[kc]; v4[3] = vc + pc->eb[kc];
+                                a = mf__ibm_square_cut(v4);
+                                if (a >= MF_R(0.0)) {
+                                    if (a >= MF_R(1.0)) ++cnt[i];
+                                    else frac[i] += a;
+                                    continue;
+                                }
+                            }
                         }
                         a = mf__ibm_texel_area(pc, x, y);
                         if (a >= MF_R(1.0)) ++cnt[i];
