@@ -6651,6 +6651,13 @@ MF_INLINE int mf__ibm_window(const mf_ibm *ibm, const mf_footprint *f, int cx, i
     mf__ibm_box box;
     int r = ibm->radius, b = ibm->res, x, y, n = 0;
     box.ok = -1;
+    if (f) {   /* a footprint the direct sum will visit: no box tests (they
+                * would read every bin's list, which the scan of the bin map
+                * never needs: measured +25% on 1e2-texel glint queries) */
+        mf_real ex = MF_R(0.5) * (MF_FABS(f->ax) + MF_FABS(f->bx)) * (mf_real)ibm->width;
+        mf_real ey = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * (mf_real)ibm->height;
+        if (MF_R(4.0) * ex * ey <= (mf_real)MF_IBM_DIRECT_TEXELS) box.ok = 0;
+    }
     for (y = -r; y <= r; ++y) {
         unsigned int s0, s1;
         int x0 = -r, x1 = r;
