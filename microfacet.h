@@ -5984,8 +5984,11 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     p->mode = MF__IBM_EXACT;
     p->direct = p->full == MF_R(0.0) && MF_R(4.0) * ex * ey <= (mf_real)MF_IBM_DIRECT_TEXELS;
     /* a few texels, or thin: their clipped areas give |A| (see mf__ibm_weights) */
-    p->few = p->direct && (MF_R(4.0) * ex * ey <= MF_R(16.0) || MF_R(32.0) * p->area <= MF_R(4.0) * ex * ey);
-    p->tiny = p->direct && !p->rect && MF_R(4.0) * ex * ey <= MF_R(16.0) && MF_R(32.0) * p->area > MF_R(4.0) * ex * ey;
+    {
+        int small = MF_R(4.0) * ex * ey <= MF_R(16.0), thin = MF_R(32.0) * p->area <= MF_R(4.0) * ex * ey;
+        p->few = p->direct && (small || thin);
+        p->tiny = p->direct && small && !thin && !p->rect;
+    }
     if (p->direct) {
         p->bx0 = (int)MF_FLOOR(p->cx - ex); p->bx1 = (int)MF_CEIL(p->cx + ex);
         p->by0 = (int)MF_FLOOR(p->cy - ey); p->by1 = (int)MF_CEIL(p->cy + ey);
@@ -6567,27 +6570,46 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
     for (i = 0; i < s->n; ++i) s->w[i] = mf_clamp(s->w[i] / tot, MF_R(0.0), MF_R(1.0));
 }
 
-/* The footprint's bounding box widened by 1.5 texels, [x0, x1] x [y0, y1]
- * (inclusive texel indices), when it is finite, narrower than a quarter
- * period and does not wrap (ok = 1); else ok = 0. */
-typedef struct mf__ibm_box { int ok, x0, y0, x1, y1; } mf__ibm_box;
-
-MF_INLINE mf__ibm_box mf__ibm_near_box(const mf_ibm *ibm, const mf_footprint *f)
+/* The footprint near the texels, for the early exits: its center (texels,
+ * less half a texel, in the first period) in e[0], e[1] and its half extents
+ * widened by 1.5 texels in e[2], e[3]; 0 when it is not finite or not
+ * narrower than a quarter period. */
+MF_INLINE int mf__ibm_near_extent(const mf_ibm *ibm, const mf_footprint *f, mf_real *e)
 {
-    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cx, cy, ex, ey;
-    mf__ibm_box b;
-    b.ok = 0; b.x0 = b.y0 = b.x1 = b.y1 = 0;
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height;
     if (!f || !mf__finite_bits(f->u) || !mf__finite_bits(f->v) || !mf__finite_bits(f->ax) || !mf__finite_bits(f->ay) ||
         !mf__finite_bits(f->bx) || !mf__finite_bits(f->by) || !(MF_FABS(f->u) < MF_R(4.0)) || !(MF_FABS(f->v) < MF_R(4.0)))
+        return 0;
+    e[2] = MF_R(0.5) * (MF_FABS(f->ax) + MF_FABS(f->bx)) * W + MF_R(1.5);
+    e[3] = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * H + MF_R(1.5);
+    if (!(e[2] < MF_R(0.25) * W) || !(e[3] < MF_R(0.25) * H)) return 0;
+    e[0] = f->u * W - MF_R(0.5); e[1] = f->v * H - MF_R(0.5);
+    e[0] -= W * MF_FLOOR(e[0] / W); e[1] -= H * MF_FLOOR(e[1] / H);   /* into the first period */
+    return 1;
+}
+
+/* The texel box [x0, x1] x [y0, y1] (inclusive) of a near extent e
+ * (mf__ibm_near_extent), ok = 1 when it does not wrap; else ok = 0. */
+typedef struct mf__ibm_box { int ok, x0, y0, x1, y1; } mf__ibm_box;
+
+MF_INLINE mf__ibm_box mf__ibm_extent_box(const mf_ibm *ibm, const mf_real *e)
+{
+    mf__ibm_box b;
+    b.ok = 0; b.x0 = b.y0 = b.x1 = b.y1 = 0;
+    if (!(e[0] >= e[2] && e[0] + e[2] + MF_R(1.0) < (mf_real)ibm->width && e[1] >= e[3] && e[1] + e[3] + MF_R(1.0) < (mf_real)ibm->height))
         return b;
-    ex = MF_R(0.5) * (MF_FABS(f->ax) + MF_FABS(f->bx)) * W + MF_R(1.5);
-    ey = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * H + MF_R(1.5);
-    if (!(ex < MF_R(0.25) * W) || !(ey < MF_R(0.25) * H)) return b;
-    cx = f->u * W - MF_R(0.5); cy = f->v * H - MF_R(0.5);
-    cx -= W * MF_FLOOR(cx / W); cy -= H * MF_FLOOR(cy / H);   /* into the first period */
-    if (!(cx >= ex && cx + ex + MF_R(1.0) < W && cy >= ey && cy + ey + MF_R(1.0) < H)) return b;
-    b.x0 = (int)(cx - ex); b.x1 = (int)(cx + ex) + 1; b.y0 = (int)(cy - ey); b.y1 = (int)(cy + ey) + 1;
+    b.x0 = (int)(e[0] - e[2]); b.x1 = (int)(e[0] + e[2]) + 1; b.y0 = (int)(e[1] - e[3]); b.y1 = (int)(e[1] + e[3]) + 1;
     b.ok = 1;
+    return b;
+}
+
+/* The footprint's box (mf__ibm_extent_box), ok = 0 also where it has no near extent. */
+MF_INLINE mf__ibm_box mf__ibm_near_box(const mf_ibm *ibm, const mf_footprint *f)
+{
+    mf_real e[4];
+    mf__ibm_box b;
+    if (mf__ibm_near_extent(ibm, f, e)) return mf__ibm_extent_box(ibm, e);
+    b.ok = 0; b.x0 = b.y0 = b.x1 = b.y1 = 0;
     return b;
 }
 
@@ -6685,27 +6707,22 @@ MF_INLINE int mf__ibm_window(const mf_ibm *ibm, const mf_footprint *f, int cx, i
  * period. 0 when it may (or the footprint is large, wide or not finite). */
 MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *bins, int nb)
 {
-    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cx, cy, ex, ey;
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, e[4], cx, cy, ex, ey;
     unsigned int tot = 0u, n, base, tab, q;
     int i, k, x, y;
-    if (!f || !mf__finite_bits(f->u) || !mf__finite_bits(f->v) || !mf__finite_bits(f->ax) || !mf__finite_bits(f->ay) ||
-        !mf__finite_bits(f->bx) || !mf__finite_bits(f->by) || !(MF_FABS(f->u) < MF_R(4.0)) || !(MF_FABS(f->v) < MF_R(4.0)))
-        return 0;
-    ex = MF_R(0.5) * (MF_FABS(f->ax) + MF_FABS(f->bx)) * W + MF_R(1.5);
-    ey = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * H + MF_R(1.5);
-    if (!(ex < MF_R(0.25) * W) || !(ey < MF_R(0.25) * H)) return 0;
+    mf__ibm_box bx;
+    if (!mf__ibm_near_extent(ibm, f, e)) return 0;
     for (i = 0; i < nb; ++i) {
         tot += mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
         if (tot > 48u) return 0;
     }
-    cx = f->u * W - MF_R(0.5); cy = f->v * H - MF_R(0.5);
-    cx -= W * MF_FLOOR(cx / W); cy -= H * MF_FLOOR(cy / H);   /* into the first period */
-    if (cx >= ex && cx + ex + MF_R(1.0) < W && cy >= ey && cy + ey + MF_R(1.0) < H) {
+    bx = mf__ibm_extent_box(ibm, e);
+    if (bx.ok) {
         /* the box does not wrap: compare the Morton codes' x and y bits with
          * its corners' (masked, they order like x and y), no decoding */
         unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
-        unsigned int x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)(cx - ex), 0u), x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)(cx + ex) + 1u, 0u);
-        unsigned int y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)(cy - ey)), y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)(cy + ey) + 1u);
+        unsigned int x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)bx.x0, 0u), x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)bx.x1, 0u);
+        unsigned int y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)bx.y0), y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)bx.y1);
         for (i = 0; i < nb; ++i) {
             n = mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
             for (q = 0u; q < n; ++q) {
@@ -6715,6 +6732,7 @@ MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *b
         }
         return 1;
     }
+    cx = e[0]; cy = e[1]; ex = e[2]; ey = e[3];
     for (i = 0; i < nb; ++i) {
         n = mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
         for (q = 0u; q < n; ++q) {
