@@ -5720,19 +5720,35 @@ MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
     return mf__ibm_get(ibm->data + ibm->off_at, (size_t)j, ibm->off_bits);
 }
 
+/* bit length of v (0 for 0), by halving (no loop over the bits) */
+MF_INLINE int mf__ibm_bitlen32(unsigned int v)
+{
+    int k = 0;
+    if (v >> 16) { k += 16; v >>= 16; }
+    if (v >> 8) { k += 8; v >>= 8; }
+    if (v >> 4) { k += 4; v >>= 4; }
+    if (v >> 2) { k += 2; v >>= 2; }
+    if (v >> 1) { k += 1; v >>= 1; }
+    return k + (int)v;
+}
+
 /* stored kd-tree levels of a bin of n texels: floor(log2(n / 16)), within the tree's depth */
 MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
 {
-    int k = 0;   /* bit length of n >> 5, by halving (no loop over the bits) */
-    n >>= 5;
-    if (n >> 16) { k += 16; n >>= 16; }
-    if (n >> 8) { k += 8; n >>= 8; }
-    if (n >> 4) { k += 4; n >>= 4; }
-    if (n >> 2) { k += 2; n >>= 2; }
-    if (n >> 1) { k += 1; n >>= 1; }
-    k += (int)n;
+    int k = mf__ibm_bitlen32(n >> 5);
     k = k < 24 ? k : 24;
     return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
+}
+
+/* Node size 2^lx x 2^ly of the kd-trees at level l: the larger side split
+ * first, x on ties (the order of the Morton code's bits). */
+MF_INLINE void mf__ibm_node_dims(const mf_ibm *ibm, int l, int *lx, int *ly)
+{
+    int kx = ibm->kx, ky = ibm->ky, d = kx > ky ? kx - ky : ky - kx, m;
+    if (l <= d) { *lx = kx > ky ? kx - l : kx; *ly = kx > ky ? ky : ky - l; return; }
+    m = l - d;   /* then alternately, x first */
+    *lx = (kx < ky ? kx : ky) - (m + 1) / 2;
+    *ly = (kx < ky ? kx : ky) - m / 2;
 }
 
 /* 1 if bin j holds no texel (its block is empty) */
@@ -6370,20 +6386,10 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                 }
             if (lo > hi) c = -1;   /* no texel */
             else {
-                unsigned int d = lo ^ hi;
-                int b = 0, l, dd;
-                if (d >> 16) { b += 16; d >>= 16; }
-                if (d >> 8) { b += 8; d >>= 8; }
-                if (d >> 4) { b += 4; d >>= 4; }
-                if (d >> 2) { b += 2; d >>= 2; }
-                if (d >> 1) { b += 1; d >>= 1; }
-                b += (int)d;   /* bits below the common prefix */
+                unsigned int d;
+                int b = mf__ibm_bitlen32(lo ^ hi);   /* bits below the common prefix */
                 if (b < cur.lx + cur.ly) {
-                    /* that node's sides: the larger side splits first, x on ties */
-                    l = depth - b; cur.lx = ibm->kx; cur.ly = ibm->ky; dd = cur.lx - cur.ly;
-                    if (dd > 0) { dd = l < dd ? l : dd; cur.lx -= dd; l -= dd; }
-                    else if (dd < 0) { dd = l < -dd ? l : -dd; cur.ly -= dd; l -= dd; }
-                    cur.lx -= (l + 1) >> 1; cur.ly -= l >> 1;
+                    mf__ibm_node_dims(ibm, depth - b, &cur.lx, &cur.ly);   /* that node's sides */
                     d = lo >> b;
                     cur.pre = d;
                     d = b < 32 ? d << b : 0u;
@@ -6611,17 +6617,6 @@ MF_INLINE mf__ibm_box mf__ibm_near_box(const mf_ibm *ibm, const mf_footprint *f)
     if (mf__ibm_near_extent(ibm, f, e)) return mf__ibm_extent_box(ibm, e);
     b.ok = 0; b.x0 = b.y0 = b.x1 = b.y1 = 0;
     return b;
-}
-
-/* Node size 2^lx x 2^ly of the kd-trees at level l: the larger side split
- * first, x on ties (the order of the Morton code's bits). */
-MF_INLINE void mf__ibm_node_dims(const mf_ibm *ibm, int l, int *lx, int *ly)
-{
-    int kx = ibm->kx, ky = ibm->ky, d = kx > ky ? kx - ky : ky - kx, m;
-    if (l <= d) { *lx = kx > ky ? kx - l : kx; *ly = kx > ky ? ky : ky - l; return; }
-    m = l - d;   /* then alternately, x first */
-    *lx = (kx < ky ? kx : ky) - (m + 1) / 2;
-    *ly = (kx < ky ? kx : ky) - m / 2;
 }
 
 /* 1 if bin j (its stored kd-tree top: k levels, boundaries at tab) has no
