@@ -420,7 +420,7 @@ typedef float mf_real;
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
 #define MF__PREFETCH(p) __builtin_prefetch((const void *)(p))
 #else
-#define MF__PREFETCH(p) ((void)0)
+#define MF__PREFETCH(p) ((void)(p))
 #endif
 /* MF_COLD: functions that device code may call but that host includers need
  * not compile (numerical samplers, tabulated and IBM queries, the generic
@@ -4728,6 +4728,7 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
     const mf_real *vs = p->vs;
     mf_real a2 = d->ax * d->ax, g = p->gamma;
     unsigned int st;
+    mf_real v1 = u1, v2 = u2;   /* the current proposal's uniforms */
     int it = 0, fresh = 1;
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     if (p->vmode == 0) return mf_ggx_sample_visible(vs[0], vs[0], w, u1, u2);
@@ -4741,7 +4742,9 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
             r = vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
             if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
-            m = mf_ggx_sample_visible(ap, ap, w, mf__stream_next(&st), mf__stream_next(&st));
+            v1 = mf__stream_next(&st);   /* drawn in order: argument order is the compiler's */
+            v2 = mf__stream_next(&st);
+            m = mf_ggx_sample_visible(ap, ap, w, v1, v2);
         }
     } else {
         mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
@@ -4776,8 +4779,8 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             b = (a2 + z) / d2;
             if (mf__stream_next(&st) * cb * (a2 + z) * d2 < n1 * n2 * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b))) {
                 mf_real ab = MF_SQRT(b);
-                m = fresh ? mf_ggx_sample_visible(ab, ab, w, u1, u2)
-                          : mf_ggx_sample_visible(ab, ab, w, mf__stream_next(&st), mf__stream_next(&st));
+                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                m = mf_ggx_sample_visible(ab, ab, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
             }
@@ -5042,6 +5045,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
 {
     mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), ax = d->ax, ay = d->ay;
     unsigned int st;
+    mf_real v1 = u1, v2 = u2;   /* the current proposal's uniforms */
     int it = 0, fresh = 1;
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     if (g == MF_R(2.0)) return mf_ggx_sample_visible(ax, ay, w, u1, u2);
@@ -5050,8 +5054,8 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     if (g > MF_R(2.0)) {
         for (it = 0; it < 64; ++it) {
             mf_real c2, q, gc, r;
-            m = fresh ? mf_ggx_sample_visible(ax, ay, w, u1, u2)
-                      : mf_ggx_sample_visible(ax, ay, w, mf__stream_next(&st), mf__stream_next(&st));
+            if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+            m = mf_ggx_sample_visible(ax, ay, w, v1, v2);
             c2 = m.z * m.z; q = mf__q(ax, ay, m); gc = g1 * c2;
             fresh = 0;
             if (!(m.z > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
@@ -5088,8 +5092,8 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (mf__stream_next(&st) * (k < 4 ? c0 + th * sg * rho : c0p) * b1 <
                 n * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
-                m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
-                          : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));
+                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                m = mf__ggx_sample_visible_k(ax, ay, k1, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
             }
@@ -14310,7 +14314,7 @@ MF_INLINE mf_real mf__energy_mu(mf_vec3 w)
 
 /* bilinear read of the built-in table of kind k (0 GGX, 1 Beckmann): the
  * E_avg column when mu < 0 */
-MF_INLINE mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
+static inline mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
 {
     int n, i, j, col;
     const float *t = mf__energy_data(&n);
@@ -14534,7 +14538,7 @@ MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
 }
 
 /* importance-form lobe value (1 - E(wo)) (1 - E(wi)) share / (pi (1 - E_avg of wi's side)) */
-MF_INLINE mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+static inline mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     int below_o = wo.z < MF_R(0.0), below_i = wi.z < MF_R(0.0);
     mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);

@@ -191,7 +191,7 @@ typedef float mf_real;
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
 #define MF__PREFETCH(p) __builtin_prefetch((const void *)(p))
 #else
-#define MF__PREFETCH(p) ((void)0)
+#define MF__PREFETCH(p) ((void)(p))
 #endif
 /* MF_COLD: functions that device code may call but that host includers need
  * not compile (numerical samplers, tabulated and IBM queries, the generic

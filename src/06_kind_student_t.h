@@ -160,6 +160,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
 {
     mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), ax = d->ax, ay = d->ay;
     unsigned int st;
+    mf_real v1 = u1, v2 = u2;   /* the current proposal's uniforms */
     int it = 0, fresh = 1;
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     if (g == MF_R(2.0)) return mf_ggx_sample_visible(ax, ay, w, u1, u2);
@@ -168,8 +169,8 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     if (g > MF_R(2.0)) {
         for (it = 0; it < 64; ++it) {
             mf_real c2, q, gc, r;
-            m = fresh ? mf_ggx_sample_visible(ax, ay, w, u1, u2)
-                      : mf_ggx_sample_visible(ax, ay, w, mf__stream_next(&st), mf__stream_next(&st));
+            if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+            m = mf_ggx_sample_visible(ax, ay, w, v1, v2);
             c2 = m.z * m.z; q = mf__q(ax, ay, m); gc = g1 * c2;
             fresh = 0;
             if (!(m.z > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
@@ -206,8 +207,8 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (mf__stream_next(&st) * (k < 4 ? c0 + th * sg * rho : c0p) * b1 <
                 n * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
-                m = fresh ? mf__ggx_sample_visible_k(ax, ay, k1, w, u1, u2)
-                          : mf__ggx_sample_visible_k(ax, ay, k1, w, mf__stream_next(&st), mf__stream_next(&st));
+                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                m = mf__ggx_sample_visible_k(ax, ay, k1, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
             }

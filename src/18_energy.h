@@ -230,7 +230,7 @@ MF_INLINE mf_real mf__energy_mu(mf_vec3 w)
 
 /* bilinear read of the built-in table of kind k (0 GGX, 1 Beckmann): the
  * E_avg column when mu < 0 */
-MF_INLINE mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
+static inline mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
 {
     int n, i, j, col;
     const float *t = mf__energy_data(&n);
@@ -454,7 +454,7 @@ MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
 }
 
 /* importance-form lobe value (1 - E(wo)) (1 - E(wi)) share / (pi (1 - E_avg of wi's side)) */
-MF_INLINE mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+static inline mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     int below_o = wo.z < MF_R(0.0), below_i = wi.z < MF_R(0.0);
     mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);
