@@ -31,7 +31,7 @@ EXR_STEPS  := exr_skip
 endif
 
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
-.PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check \
+.PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
         $(foreach s,header warnings config package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
@@ -306,14 +306,32 @@ demo: $(EXAMPLES:%=out/%.png)
 	@echo "make demo: $(words $(EXAMPLES)) examples; images in out/$(if $(EXR_DEFS),, (no .exr: OpenEXR not found, or EXR=no))"
 	@cd out && ls -1 $(foreach e,$(EXAMPLES),$(e).png $(e).pfm $(if $(EXR_DEFS),$(e).exr)) | sed 's|^|  out/|'
 
-# CUDA: device code must compile (no GPU needed); optional.
+# CUDA: device code must compile (no GPU needed); optional. cuda-check also
+# builds the GPU test (tests/cuda_run.cu: the implementation compiled by nvcc
+# too, warnings are errors) and runs its host half; cuda-run runs it on a GPU.
+NVCC_FLAGS = -std=c++17 -O2 -arch=$(CUDA_ARCH) -Werror all-warnings -I.
+CUDA_ARCH ?= sm_90
+HAVE_GPU   = $(shell nvidia-smi -L >/dev/null 2>&1 && echo yes)
 cuda-check: | $(BUILD)
 ifeq ($(HAVE_NVCC),yes)
-	nvcc -std=c++17 -I. -c tests/cuda_kernel.cu -o $(BUILD)/cuda_kernel.o
-	nvcc -std=c++17 -DMF_USE_DOUBLE -I. -c tests/cuda_kernel.cu -o $(BUILD)/cuda_kernel_d.o
+	nvcc -std=c++17 -Werror all-warnings -I. -c tests/cuda_kernel.cu -o $(BUILD)/cuda_kernel.o
+	nvcc -std=c++17 -Werror all-warnings -DMF_USE_DOUBLE -I. -c tests/cuda_kernel.cu -o $(BUILD)/cuda_kernel_d.o
+	@$(MAKE) --no-print-directory $(BUILD)/cuda_run $(BUILD)/cuda_run_d
+	@./$(BUILD)/cuda_run --host | tail -1 && ./$(BUILD)/cuda_run_d --host | tail -1
 	@echo "cuda-check: device code compiles"
 else
 	@echo "cuda-check: nvcc not found, skipped"
+endif
+$(BUILD)/cuda_run: tests/cuda_run.cu microfacet.h | $(BUILD)
+	nvcc $(NVCC_FLAGS) tests/cuda_run.cu -o $@
+$(BUILD)/cuda_run_d: tests/cuda_run.cu microfacet.h | $(BUILD)
+	nvcc $(NVCC_FLAGS) -DMF_USE_DOUBLE tests/cuda_run.cu -o $@
+cuda-run:
+ifeq ($(HAVE_NVCC)$(HAVE_GPU),yesyes)
+	@$(MAKE) --no-print-directory $(BUILD)/cuda_run $(BUILD)/cuda_run_d
+	./$(BUILD)/cuda_run && ./$(BUILD)/cuda_run_d
+else
+	@echo "cuda-run: needs nvcc and a CUDA GPU (nvidia-smi -L), skipped"
 endif
 
 # make install: the header, LICENSE and the pkg-config file (the CMake package
