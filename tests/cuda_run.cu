@@ -10,8 +10,11 @@
 //   ./build/cuda_run            float build (MF_USE_DOUBLE for the double one)
 //   ./build/cuda_run --host     the host half alone (checks this file on a
 //                               machine with no GPU; compares nothing)
-//   --cases N (at most 262144), --no-rates: fewer cases, no throughput
-//   (for compute-sanitizer)
+//   --cases N (at most 262144), --first K (cases K .. K+N-1), --no-rates,
+//   --skip MASK (groups of outputs left out: 1 kinds, 2 dielectric, 4 LTC,
+//   8 tabulated, 16 IBM, 32/64/128/256 one IBM query), --block B (threads
+//   per block, 128), --stack S (stack limit; 0: the kernel's local memory
+//   + 1 KB, -1: the driver's): to narrow down a failing case
 // Prints "cuda-run: N passed, N failed" last and exits non-zero on a failure.
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
@@ -59,6 +62,7 @@ MF_HD static mf_real alpha_of(mf_real u)    // 1e-3 .. 1, log-uniform
 struct world {
     mf_tabulated tab;   // rebased onto device memory for the kernel
     mf_ibm ibm;         // data pointing at device memory for the kernel
+    unsigned skip;      // groups of outputs left at 0 (--skip: bits of the groups below)
 };
 static const char *out_name[NOUT] = {
     "D", "lambda", "G2", "brdf", "brdf_pdf", "sample.x", "sample.z", "sample_weight",
@@ -82,6 +86,8 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
     mf_vec3 wo = dir(rnd(i, 5), rnd(i, 6), MF_R(1.5707)), wi = dir(rnd(i, 7), rnd(i, 8), MF_R(1.5707));
     mf_vec3 wm = mf_normalize(mf_vec3_make(wo.x + wi.x, wo.y + wi.y, wo.z + wi.z));
     mf_real u1 = rnd(i, 9), u2 = rnd(i, 10), u3 = rnd(i, 11), eta = MF_R(1.05) + rnd(i, 12);
+    for (int k = 0; k < NOUT; ++k) o[k] = 0;
+    if (!(w->skip & 1)) {
     o[0] = mf_D(&d, wm);
     o[1] = mf_lambda(&d, wo);
     o[2] = mf_G2(&d, wo, wi, wm);
@@ -89,14 +95,18 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
     o[4] = mf_brdf_pdf(&d, wo, wi);
     mf_vec3 s = mf_brdf_sample(&d, wo, u1, u2);
     o[5] = s.x; o[6] = s.z;
-    o[7] = s.z > 0 ? mf_brdf_sample_weight(&d, wo, s) : MF_R(0.0);
+    o[7] = mf_brdf_sample_weight(&d, wo, wi);   // at a given direction: near the horizon the
+                                                // weight amplifies the sample's rounding
     mf_vec3 v = mf_sample_visible(&d, wo, u1, u2);
     o[8] = v.x; o[9] = v.z;
+    }
     mf_vec3 wt = mf_vec3_make(-wi.x, -wi.y, -wi.z);
+    if (!(w->skip & 2)) {
     o[10] = mf_dielectric_bsdf(&d, wo, wt, eta);
     o[11] = mf_dielectric_pdf(&d, wo, wt, eta);
     o[12] = mf_dielectric_sample(&d, wo, eta, u1, u2, u3).z;
-    {   // a quad light over the shading point, through a GGX LTC
+    }
+    if (!(w->skip & 4)) {   // a quad light over the shading point, through a GGX LTC
         mf_ltc l = mf_ltc_from_inverse(MF_R(1.0) + rnd(i, 13), MF_R(0.3), MF_R(1.5), MF_R(-0.2), MF_R(1.0));
         mf_real cx = MF_R(4.0) * rnd(i, 14) - MF_R(2.0), h = MF_R(0.2) + rnd(i, 15);
         mf_vec3 q[4];
@@ -104,33 +114,33 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
         q[2] = mf_vec3_make(cx + 1, 1, h); q[3] = mf_vec3_make(cx - 1, 1, h);
         o[13] = mf_ltc_integrate(&l, q, 4, 0);
     }
-    {
+    if (!(w->skip & 8)) {
         mf_ndf t = mf_tabulated_ndf(&w->tab);
         o[14] = mf_brdf(&t, wo, wi);
         o[15] = mf_brdf_sample(&t, wo, u1, u2).z;
     }
-    {   // footprints of 0.1 to 1e5 texels, sheared, anywhere on the map
+    if (!(w->skip & 16)) {   // footprints of 0.1 to 1e5 texels, sheared, anywhere on the map
         mf_real side = MF_EXP(MF_R(-1.15) + MF_R(6.9) * rnd(i, 16)) / (mf_real)w->ibm.width;
         mf_footprint f;
         f.u = rnd(i, 17); f.v = rnd(i, 18);
         f.ax = side; f.ay = MF_R(0.3) * side * rnd(i, 19);
         f.bx = MF_R(-0.2) * side * rnd(i, 20); f.by = side * (MF_R(0.5) + rnd(i, 21));
         mf_vec3 h = (i & 16) ? mf_ibm_bin_normal(&w->ibm, (int)(mix32(i) % (unsigned)mf_ibm_bin_count(&w->ibm))) : wm;
-        o[16] = mf_ibm_bin_weight(&w->ibm, mf_ibm_bin_of(&w->ibm, h), &f);
+        if (!(w->skip & 32)) o[16] = mf_ibm_bin_weight(&w->ibm, mf_ibm_bin_of(&w->ibm, h), &f);
         // wi mirrored about h: a direction on the map's glints
         mf_real oh = MF_R(2.0) * mf_dot(wo, h);
         mf_vec3 wg = mf_vec3_make(oh * h.x - wo.x, oh * h.y - wo.y, oh * h.z - wo.z);
         if (wg.z <= MF_R(0.0)) wg = wi;
-        o[17] = mf_ibm_brdf(&w->ibm, &f, wo, wg);
-        o[18] = mf_ibm_pdf(&w->ibm, &f, wo, wg);
-        o[19] = mf_ibm_sample(&w->ibm, &f, wo, u1, u2, u3, rnd(i, 22)).z;
+        if (!(w->skip & 64)) o[17] = mf_ibm_brdf(&w->ibm, &f, wo, wg);
+        if (!(w->skip & 128)) o[18] = mf_ibm_pdf(&w->ibm, &f, wo, wg);
+        if (!(w->skip & 256)) o[19] = mf_ibm_sample(&w->ibm, &f, wo, u1, u2, u3, rnd(i, 22)).z;
     }
 }
 
-__global__ void k_cases(world w, mf_real *out, int n)
+__global__ void k_cases(world w, mf_real *out, int n, unsigned first)
 {
     int i = blockIdx.x * blockDim.x + threadIdx.x;
-    if (i < n) run_case(&w, (unsigned)i, out + (size_t)NOUT * (size_t)i);
+    if (i < n) run_case(&w, first + (unsigned)i, out + (size_t)NOUT * (size_t)i);
 }
 
 // ---- throughput: each thread takes `per` samples, alpha per thread ----
@@ -182,13 +192,21 @@ static int finite_out(mf_real x) { return isfinite((double)x); }
 int main(int argc, char **argv)
 {
     int host_only = 0, rates = 1, n = NCASE;
+    unsigned first = 0;
+    int stack = 0, block = 128;
+    unsigned skip = 0;
     for (int a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "--host")) host_only = 1;
         else if (!strcmp(argv[a], "--no-rates")) rates = 0;
         else if (!strcmp(argv[a], "--cases") && a + 1 < argc) n = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--first") && a + 1 < argc) first = (unsigned)atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--stack") && a + 1 < argc) stack = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--block") && a + 1 < argc) block = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--skip") && a + 1 < argc) skip = (unsigned)atoi(argv[++a]);
     }
     if (n < 1 || n > NCASE) n = NCASE;
     world w, wd;
+    w.skip = skip;
     mf_real *hout = (mf_real *)malloc(sizeof(mf_real) * NOUT * (size_t)n);
     mf_real *dres = (mf_real *)malloc(sizeof(mf_real) * NOUT * (size_t)n);
     mf_real *dout = 0, *sink = 0;
@@ -200,7 +218,7 @@ int main(int argc, char **argv)
     check(mf_tabulated_from_ndf(&w.tab, &g0, 64) == MF_SUCCESS, "tabulated build");
     check(mf_ibm_build(&w.ibm, map, 512, 512, MF_R(0.01)) == MF_SUCCESS, "ibm build (512^2 flakes, alpha 0.01)");
     if (failed) goto done;
-    for (int i = 0; i < n; ++i) run_case(&w, (unsigned)i, hout + (size_t)NOUT * i);
+    for (int i = 0; i < n; ++i) run_case(&w, first + (unsigned)i, hout + (size_t)NOUT * i);
     {
         int bad = 0;
         for (size_t k = 0; k < (size_t)NOUT * n; ++k) bad += !finite_out(hout[k]);
@@ -220,17 +238,22 @@ int main(int argc, char **argv)
             CUDA_OK(cudaFuncGetAttributes(&fa, k_cases));
             CUDA_OK(cudaDeviceGetLimit(&lim, cudaLimitStackSize));
             printf("k_cases: %zu bytes of local memory per thread (stack limit %zu)\n", (size_t)fa.localSizeBytes, lim);
-            if (lim < fa.localSizeBytes + 1024) CUDA_OK(cudaDeviceSetLimit(cudaLimitStackSize, fa.localSizeBytes + 1024));
+            if (stack >= 0) {
+                CUDA_OK(cudaDeviceSetLimit(cudaLimitStackSize, stack ? (size_t)stack : fa.localSizeBytes + 1024));
+                CUDA_OK(cudaDeviceGetLimit(&lim, cudaLimitStackSize));
+                printf("stack limit set to %zu\n", lim);
+            }
         }
         CUDA_OK(cudaMalloc(&dtab, w.tab.bytes));
         CUDA_OK(cudaMemcpy(dtab, w.tab.block, w.tab.bytes, cudaMemcpyHostToDevice));
         CUDA_OK(cudaMalloc((void **)&dibm, w.ibm.words * sizeof(unsigned int)));
         CUDA_OK(cudaMemcpy(dibm, w.ibm.data, w.ibm.words * sizeof(unsigned int), cudaMemcpyHostToDevice));
+        wd = w;
         wd.tab = mf_tabulated_rebase(&w.tab, dtab);
         wd.ibm = w.ibm;
         wd.ibm.data = dibm;
         CUDA_OK(cudaMalloc((void **)&dout, sizeof(mf_real) * NOUT * (size_t)n));
-        k_cases<<<(n + 127) / 128, 128>>>(wd, dout, n);
+        k_cases<<<(n + block - 1) / block, block>>>(wd, dout, n, first);
         CUDA_OK(cudaGetLastError());
         CUDA_OK(cudaDeviceSynchronize());
         CUDA_OK(cudaMemcpy(dres, dout, sizeof(mf_real) * NOUT * (size_t)n, cudaMemcpyDeviceToHost));
