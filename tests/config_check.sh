@@ -5,7 +5,11 @@
 #  2. defining only one of MF_MALLOC / MF_FREE stops with an #error saying so;
 #  3. a unit built with MF_USE_DOUBLE does not link against a float
 #     implementation (nor the reverse), and the error names the tagged symbol;
-#  4. one program may hold both precisions (each unit with its own implementation).
+#  4. one program may hold both precisions (each unit with its own implementation);
+#  5. the samplers draw the same samples whatever compiles them: the digest of
+#     tests/determinism_check.c from CC, CXX and clang (when present), float
+#     and double, contraction off (C leaves argument evaluation order to the
+#     compiler: two draws passed as arguments once differed between gcc and clang).
 CC=$1; CXX=$2; WARN=$3; B=$4
 fail() { echo "config check: $*"; exit 1; }
 for opt in "" -DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE \
@@ -31,4 +35,14 @@ echo "$out" | grep -q "mf_tabulated_from_ndf_f32" || fail "float vs double: the 
 $CC -std=c99 -O1 -DMF_USE_DOUBLE -I. -c tests/mix_other.c -o $B/mix_other_d.o || fail "double half"
 $CC -std=c99 -O1 -DMIX_BOTH -I. tests/mix_main.c $B/impl_f.o $B/mix_other_d.o -o $B/mix_both -lm || fail "both precisions in one program do not link"
 $B/mix_both >/dev/null || fail "both precisions in one program disagree"
-echo "config check: opt-outs, allocator pair, precision mixing: ok"
+for prec in "" -DMF_USE_DOUBLE; do
+  ref=""
+  for c in "$CC -std=c99" "$CXX -x c++" clang; do
+    [ "$c" = clang ] && { command -v clang >/dev/null 2>&1 || continue; c="clang -std=c99"; }
+    $c -O2 -ffp-contract=off $prec -I. tests/determinism_check.c -o $B/determinism -lm || fail "determinism check: $c $prec does not build"
+    got=$($B/determinism) || fail "determinism check: $c $prec failed"
+    [ -z "$ref" ] && { ref=$got; refc=$c; }
+    [ "$got" = "$ref" ] || fail "samples differ between $refc and $c $prec: $ref / $got"
+  done
+done
+echo "config check: opt-outs, allocator pair, precision mixing, samples the same under every compiler: ok"
