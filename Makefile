@@ -311,7 +311,7 @@ demo: $(EXAMPLES:%=out/%.png)
 # too, warnings are errors) and runs its host half; cuda-run runs it on a GPU.
 NVCC_FLAGS = -std=c++17 -O2 -arch=$(CUDA_ARCH) -Werror all-warnings -I.
 CUDA_ARCH ?= sm_90
-HAVE_GPU   = $(shell nvidia-smi -L >/dev/null 2>&1 && echo yes)
+HAVE_GPU   = $(if $(HAVE_NVCC),$(shell nvidia-smi -L >/dev/null 2>&1 && echo yes))
 cuda-check: | $(BUILD)
 ifeq ($(HAVE_NVCC),yes)
 	nvcc -std=c++17 -Werror all-warnings -I. -c tests/cuda_kernel.cu -o $(BUILD)/cuda_kernel.o
