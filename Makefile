@@ -308,7 +308,8 @@ demo: $(EXAMPLES:%=out/%.png)
 
 # CUDA: device code must compile (no GPU needed); optional. cuda-check also
 # builds the GPU test (tests/cuda_run.cu: the implementation compiled by nvcc
-# too, warnings are errors) and runs its host half; cuda-run runs it on a GPU.
+# too, warnings are errors) and runs its host half; cuda-run runs it on a GPU
+# (CUDA_ARCH: the GPU's architecture, e.g. make cuda-run CUDA_ARCH=sm_80).
 NVCC_FLAGS = -std=c++17 -O2 -arch=$(CUDA_ARCH) -Werror all-warnings -I.
 CUDA_ARCH ?= sm_90
 HAVE_GPU   = $(if $(HAVE_NVCC),$(shell nvidia-smi -L >/dev/null 2>&1 && echo yes))
