@@ -284,10 +284,10 @@ bench: | $(BUILD)
 	$(CC) -std=c99 -O2 $(WARN) -DMF_USE_DOUBLE -DMF_BENCH_FLAGS="\"-std=c99 -O2 -DMF_USE_DOUBLE\"" -I. bench/bench.c -o $(BUILD)/bench_double -lm
 	./$(BUILD)/bench
 	./$(BUILD)/bench_double
-	sh tools/bench_inline.sh "$(CC)" 3
+	sh tools/bench_inline.sh "$(CC)" 5
 # the hot paths at -O2, -O3 -march=native and in a large translation unit
 bench-inline: | $(BUILD)
-	sh tools/bench_inline.sh "$(CC)" 3
+	sh tools/bench_inline.sh "$(CC)" 5
 
 # ---- make demo: each example is rebuilt only when its source or the header
 # ---- changed and rerun only when rebuilt; its output is printed with

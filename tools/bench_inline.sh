@@ -2,10 +2,12 @@
 # bench_inline.sh - the hot paths at three builds: -O2 (the reference), -O3
 # -march=native, and -O2 in a large translation unit (bench/big_tu.h adds 48
 # functions calling the whole inline API). Runs the bench's core section of
-# each build ROUNDS times (default 3), alternating, and prints per line the
-# median ns of each build and the median ratios O3/O2 and bigTU/O2 (below 1
-# is faster). Usage: tools/bench_inline.sh [CC] [ROUNDS] [extra flags, e.g. -DMF_USE_DOUBLE]
-CC=${1:-cc}; ROUNDS=${2:-3}; EXTRA=$3
+# each build ROUNDS times (default 5), alternating, and prints per line the
+# best (least) ns of each build over the rounds and the ratios of the bests,
+# O3/O2 and bigTU/O2 (below 1 is faster). Best rather than median: on a
+# machine whose speed state changes between runs, a round whose binary ran
+# slow drops out as long as one round of each build ran fast. Usage: tools/bench_inline.sh [CC] [ROUNDS] [extra flags, e.g. -DMF_USE_DOUBLE]
+CC=${1:-cc}; ROUNDS=${2:-5}; EXTRA=$3
 B=build/bench_inline
 set -e
 mkdir -p $B
@@ -18,21 +20,20 @@ while [ $r -le "$ROUNDS" ]; do
   r=$((r + 1))
 done > $B/raw.txt
 awk '
-function median(s,   a, n, i, j, t) {
-  n = split(s, a, " ");
-  for (i = 1; i <= n; ++i) for (j = i + 1; j <= n; ++j) if (a[j] + 0 < a[i] + 0) { t = a[i]; a[i] = a[j]; a[j] = t }
-  return n % 2 ? a[(n + 1) / 2] : (a[n / 2] + a[n / 2 + 1]) / 2
+function least(s,   a, n, i, m) {
+  n = split(s, a, " "); m = a[1] + 0;
+  for (i = 2; i <= n; ++i) if (a[i] + 0 < m) m = a[i] + 0;
+  return m
 }
 { key = $3; if (!(key in seen)) { seen[key] = 1; order[++nk] = key }
-  t[$1, key] = t[$1, key] " " $4; rr[$1, $2, key] = $4 }
+  t[$1, key] = t[$1, key] " " $4 }
 END {
   printf "%-44s %10s %10s %10s %7s %7s\n", "line", "O2_ns", "O3nat_ns", "bigTU_ns", "O3/O2", "big/O2";
   for (k = 1; k <= nk; ++k) {
-    key = order[k]; so = ""; sb = "";
-    for (r = 1; r <= '"$ROUNDS"'; ++r) if (rr["o2", r, key] > 0) {
-      so = so " " rr["o3", r, key] / rr["o2", r, key]; sb = sb " " rr["big", r, key] / rr["o2", r, key] }
-    if (so == "") continue;
-    printf "%-44s %10.2f %10.2f %10.2f %7.3f %7.3f\n", key, median(t["o2", key]), median(t["o3", key]),
-           median(t["big", key]), median(so), median(sb)
+    key = order[k];
+    if (t["o2", key] == "" || t["o3", key] == "" || t["big", key] == "") continue;
+    o2 = least(t["o2", key]); o3 = least(t["o3", key]); bg = least(t["big", key]);
+    if (!(o2 > 0)) continue;
+    printf "%-44s %10.2f %10.2f %10.2f %7.3f %7.3f\n", key, o2, o3, bg, o3 / o2, bg / o2
   }
 }' $B/raw.txt
