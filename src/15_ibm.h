@@ -347,6 +347,15 @@ MF_INLINE void mf__ibm_unmorton(int kx, int ky, unsigned int c, int *x, int *y)
     *y = (int)uy;
 }
 
+/* (x, y) of a code from its x bits cx and y bits cy (the code masked): the
+ * 2 kmin interleaved bits (mask lom) compacted, the bits above them one
+ * axis's own (mf__ibm_unmorton's result, without splitting the code) */
+MF_INLINE void mf__ibm_unmorton_masked(unsigned int cx, unsigned int cy, unsigned int lom, int kmin, int *x, int *y)
+{
+    *x = (int)(mf__ibm_compact((cx & lom) >> 1) | ((cx & ~lom) >> kmin));
+    *y = (int)(mf__ibm_compact(cy & lom) | ((cy & ~lom) >> kmin));
+}
+
 /* start of bin j's block in the lists section */
 MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
 {
@@ -811,10 +820,16 @@ MF_INLINE void mf__ibm_set_init(mf__ibm_set *s, int cx, int cy, int r)
     for (i = 0; i < s->side * s->side; ++i) s->slot[i] = -1;
 }
 
+/* index in slot of window cell (dx, dy), |dx|, |dy| <= r */
+MF_INLINE int mf__ibm_set_cell(const mf__ibm_set *s, int dx, int dy)
+{
+    return (dy + s->r) * s->side + dx + s->r;
+}
+
 /* adds window cell (dx, dy) (bin j) to the list */
 MF_INLINE void mf__ibm_set_add(mf__ibm_set *s, int dx, int dy, int j)
 {
-    s->slot[(dy + s->r) * s->side + dx + s->r] = (short)s->n;
+    s->slot[mf__ibm_set_cell(s, dx, dy)] = (short)s->n;
     s->bin[s->n] = j;
     s->w[s->n] = MF_R(0.0);
     ++s->n;
@@ -828,7 +843,7 @@ MF_INLINE int mf__ibm_set_find(const mf_ibm *ibm, const mf__ibm_set *s, unsigned
     ix = (int)(v & ((1u << ibm->axis_bits) - 1u)); iy = (int)(v >> ibm->axis_bits);
     dx = ix - s->cx; dy = iy - s->cy;
     if (dx < -s->r || dx > s->r || dy < -s->r || dy > s->r) return -1;
-    return s->slot[(dy + s->r) * s->side + dx + s->r];
+    return s->slot[mf__ibm_set_cell(s, dx, dy)];
 }
 
 /* Direct texel sum over a piece (Eq. 5.2-5.3 grouped by bin): a texel's bin
@@ -899,7 +914,7 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
         int ty = y >= 0 && y < H ? y : y % H;   /* no division inside the period */
         if (ty < 0) ty += H;
         for (x = p->bx0; x < p->bx1; ++x) {
-            int tx = x >= 0 && x < W ? x : x % W, k, dx, dy;
+            int tx = x >= 0 && x < W ? x : x % W, dx, dy;
             unsigned int v;
             if (tx < 0) tx += W;
             v = mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)W + (size_t)tx, ibm->bin_bits);
@@ -909,8 +924,7 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
             }
             dx = (int)(v & ((1u << ibm->axis_bits) - 1u)) - s->cx; dy = (int)(v >> ibm->axis_bits) - s->cy;
             if (dx * dx + dy * dy > r * (r + 1)) continue;
-            k = (dy + r) * s->side + dx + r;
-            if (s->slot[k] < 0) mf__ibm_set_add(s, dx, dy, (s->cx + dx) + ibm->res * (s->cy + dy));
+            if (s->slot[mf__ibm_set_cell(s, dx, dy)] < 0) mf__ibm_set_add(s, dx, dy, (s->cx + dx) + ibm->res * (s->cy + dy));
         }
     }
     return collect ? s->n : 0;
@@ -1026,8 +1040,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                     d = lo >> b;
                     cur.pre = d;
                     d = b < 32 ? d << b : 0u;
-                    cur.x0 = (int)(mf__ibm_compact((d & xm & lom) >> 1) | ((d & xm & ~lom) >> kmin));
-                    cur.y0 = (int)(mf__ibm_compact(d & ym & lom) | ((d & ym & ~lom) >> kmin));
+                    mf__ibm_unmorton_masked(d & xm, d & ym, lom, kmin, &cur.x0, &cur.y0);
                 }
             }
         }
@@ -1064,10 +1077,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                             if (cx < bx0 || cx > bx1 || cy < by0 || cy > by1) continue;   /* outside the piece's box */
                             if (cx >= ix0 && cx <= ix1 && cy >= iy0 && cy <= iy1) { ++cnt[i]; continue; }   /* wholly inside */
                         }
-                        /* mf__ibm_unmorton from the masked codes: the bits
-                         * above the interleaved 2 k are one axis's own */
-                        x = (int)(mf__ibm_compact((cx & lom) >> 1) | ((cx & ~lom) >> kmin));
-                        y = (int)(mf__ibm_compact(cy & lom) | ((cy & ~lom) >> kmin));
+                        mf__ibm_unmorton_masked(cx, cy, lom, kmin, &x, &y);
                         if (!pc->rect) {
                             /* mf__ibm_texel_area's tests, same operations,
                              * for the edges that may cut the node: a texel
@@ -1413,7 +1423,7 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
     mf__ibm_footprint(ibm, f, &p);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < n; ++i) {
-        int k = s.slot[(dy[i] + s.r) * s.side + dx[i] + s.r];
+        int k = s.slot[mf__ibm_set_cell(&s, dx[i], dy[i])];
         if (k >= 0) weights[i] = s.w[k];
     }
     return n;
