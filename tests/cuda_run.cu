@@ -36,16 +36,12 @@ static void check(int ok, const char *what)
 #define CUDA_OK(x) do { cudaError_t e_ = (x); if (e_ != cudaSuccess) { \
     printf("FAIL %s: %s\n", #x, cudaGetErrorString(e_)); ++failed; goto done; } } while (0)
 
-// ---- inputs: a hash of the case index, the same on host and device ----
-MF_HD static unsigned mix32(unsigned x)
-{
-    x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
-    return x;
-}
+// ---- inputs: a hash of the case index (the library's mf__mix32), the
+// same on host and device ----
 // uniform in [0, 1), 24 bits
 MF_HD static mf_real rnd(unsigned i, unsigned k)
 {
-    return (mf_real)(mix32(i * 0x9e3779b9u + k * 0x85ebca6bu + 0x632be5abu) >> 8) * MF_R(5.9604644775390625e-8);
+    return (mf_real)(mf__mix32(i * 0x9e3779b9u + k * 0x85ebca6bu + 0x632be5abu) >> 8) * MF_R(5.9604644775390625e-8);
 }
 // directions of the upper hemisphere up to polar angle tmax
 MF_HD static mf_vec3 dir(mf_real u1, mf_real u2, mf_real tmax)
@@ -125,7 +121,7 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
         f.u = rnd(i, 17); f.v = rnd(i, 18);
         f.ax = side; f.ay = MF_R(0.3) * side * rnd(i, 19);
         f.bx = MF_R(-0.2) * side * rnd(i, 20); f.by = side * (MF_R(0.5) + rnd(i, 21));
-        mf_vec3 h = (i & 16) ? mf_ibm_bin_normal(&w->ibm, (int)(mix32(i) % (unsigned)mf_ibm_bin_count(&w->ibm))) : wm;
+        mf_vec3 h = (i & 16) ? mf_ibm_bin_normal(&w->ibm, (int)(mf__mix32(i) % (unsigned)mf_ibm_bin_count(&w->ibm))) : wm;
         // the bin of the footprint's centre texel, or of h
         int bin = (i & 32) ? mf_ibm_bin_of(&w->ibm, h)
                            : mf_ibm_texel_bin(&w->ibm, (int)(f.u * (mf_real)w->ibm.width), (int)(f.v * (mf_real)w->ibm.height));
@@ -190,8 +186,6 @@ static mf_real *flake_map(int w, int h, int cell)
     return n;
 }
 
-static int finite_out(mf_real x) { return isfinite((double)x); }
-
 int main(int argc, char **argv)
 {
     int host_only = 0, rates = 1, n = NCASE;
@@ -224,7 +218,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < n; ++i) run_case(&w, first + (unsigned)i, hout + (size_t)NOUT * i);
     {
         int bad = 0;
-        for (size_t k = 0; k < (size_t)NOUT * n; ++k) bad += !finite_out(hout[k]);
+        for (size_t k = 0; k < (size_t)NOUT * n; ++k) bad += !isfinite((double)hout[k]);
         check(bad == 0, "host outputs finite");
         for (int k = 0; k < NOUT; ++k) {   // no output compared only as zeros
             int nz = 0;
