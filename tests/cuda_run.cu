@@ -264,13 +264,14 @@ int main(int argc, char **argv)
         // Tolerances: float 1e-4 (fused multiply-adds and the device's own
         // expf/erff/sqrtf move results by a few ulp, which grazing angles and
         // tiny roughness amplify), the IBM BRDF and pdf (float sums of
-        // flake lobes near their cut: 1.6e-3 from double at p99 on the host) 5e-3;
-        // double 1e-9. A branch (rejection, reflect or refract) can flip on
+        // flake lobes near their cut: 1.6e-3 from double at p99 on the host) 5e-3,
+        // the LTC quad (float's own error: up to 3.1e-4 from double on the
+        // host over this quad's range of cases) 1e-3; double 1e-9. A branch (rejection, reflect or refract) can flip on
         // one ulp, so 1 case in 1e4 may differ beyond it; a non-finite
         // result never.
         for (int k = 0; k < NOUT; ++k) {
             int ibm_sum = k == 17 || k == 18;
-            double tol = sizeof(mf_real) == 8 ? (ibm_sum ? 1e-8 : 1e-9) : (ibm_sum ? 5e-3 : 1e-4);
+            double tol = sizeof(mf_real) == 8 ? (ibm_sum ? 1e-8 : 1e-9) : (ibm_sum ? 5e-3 : k == 13 ? 1e-3 : 1e-4);
             double worst = 0, sum = 0;
             int over = 0, nonfinite = 0;
             for (int i = 0; i < n; ++i) {
