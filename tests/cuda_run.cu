@@ -265,8 +265,9 @@ int main(int argc, char **argv)
         // expf/erff/sqrtf move results by a few ulp, which grazing angles and
         // tiny roughness amplify), the IBM BRDF and pdf (float sums of
         // flake lobes near their cut: 1.6e-3 from double at p99 on the host) 5e-3,
-        // the LTC quad (float's own error: up to 3.1e-4 from double on the
-        // host over this quad's range of cases) 1e-3; double 1e-9. A branch (rejection, reflect or refract) can flip on
+        // the LTC quad (float sums of edge terms that cancel for the wide,
+        // low quads: float's own error from double exceeds 1e-4) 1e-3;
+        // double 1e-9. A branch (rejection, reflect or refract) can flip on
         // one ulp, so 1 case in 1e4 may differ beyond it; a non-finite
         // result never.
         for (int k = 0; k < NOUT; ++k) {
