@@ -118,7 +118,7 @@ MF_FORCE_INLINE mf_real mf__q(mf_real ax, mf_real ay, mf_vec3 m)
 MF_FORCE_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
 {
     mf_real x = ax * w.x, y = ay * w.y;
-    mf_real r = (x * x + y * y) / mf_max(w.z * w.z, MF_R(1e-30));
+    mf_real r = (x * x + y * y) / (w.z * w.z + MF_R(1e-30));   /* + not max: no select on the division's path */
     return r < MF_A2T2_MAX ? r : MF_A2T2_MAX;
 }
 
