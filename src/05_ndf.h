@@ -134,8 +134,9 @@ MF_FORCE_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf
 /* wm for the squared unit slope radius r2 at the azimuth 2 pi u2 (mf__wm_from_slope). */
 MF_FORCE_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
-    mf_real phi = MF_R(2.0) * MF_PI * u2;
-    return mf__wm_from_slope(ax, ay, r2, MF_COS(phi), MF_SIN(phi));
+    mf_real cp, sp;
+    mf__sincos_2pi(u2, &cp, &sp);
+    return mf__wm_from_slope(ax, ay, r2, cp, sp);
 }
 
 /* Stretch w into the unit-roughness configuration; returns cos and sin of its
