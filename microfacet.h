@@ -1344,16 +1344,16 @@ MF_FORCE_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 MF_FORCE_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
 {
     mf_vec3 v, h;
-    mf_real phi, z, s, l2, b;
+    mf_real cp, sp, z, s, l2, b;
     v = mf_vec3_make(ax * w.x, ay * w.y, w.z);
     l2 = mf_dot(v, v);
     if (!(l2 > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     v = mf_scale(v, MF_R(1.0) / MF_SQRT(l2));
-    phi = MF_R(2.0) * MF_PI * u1;
+    mf__sincos_2pi(u1, &cp, &sp);                            /* azimuth 2 pi u1 (u1 clamped to [0, 1]) */
     b = k * v.z;
     z = (MF_R(1.0) - u2) * (MF_R(1.0) + b) - b;              /* cap of the visible hemisphere */
     s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
-    h = mf_vec3_make(s * MF_COS(phi) + v.x, s * MF_SIN(phi) + v.y, z + v.z);
+    h = mf_vec3_make(s * cp + v.x, s * sp + v.y, z + v.z);
     h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
     if (!(mf_dot(h, h) > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     return h;
