@@ -998,6 +998,15 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
  * picks and negates without branches (an index and exact factors +-1). */
 MF_FORCE_INLINE void mf__sincos_2pi(mf_real u, mf_real *c, mf_real *s)
 {
+#if defined(__CUDA_ARCH__)
+    /* device: CUDA's sincospi is exact in the same sense and faster there
+     * than this polynomial (GGX sampling, float: 5% on an H100) */
+#ifdef MF_USE_DOUBLE
+    sincospi(MF_R(2.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), s, c);
+#else
+    sincospif(MF_R(2.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), s, c);
+#endif
+#else
     mf_real q = MF_R(4.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), t, t2, v[2];
     int k = (int)(q + MF_R(0.5));
     t = (q - (mf_real)k) * MF_R(1.57079632679489661923);
@@ -1028,6 +1037,7 @@ MF_FORCE_INLINE void mf__sincos_2pi(mf_real u, mf_real *c, mf_real *s)
     v[0] = MF_R(1.0) - t2 * v[0];                             /* cos t */
     *c = v[k & 1] * (mf_real)(1 - ((k + 1) & 2));
     *s = v[(k & 1) ^ 1] * (mf_real)(1 - (k & 2));
+#endif
 }
 
 /* Regularized incomplete beta I_x(a, b) by Lentz's continued fraction
