@@ -999,8 +999,9 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
 MF_FORCE_INLINE void mf__sincos_2pi(mf_real u, mf_real *c, mf_real *s)
 {
 #if defined(__CUDA_ARCH__)
-    /* device: CUDA's sincospi is exact in the same sense and faster there
-     * than this polynomial (GGX sampling, float: 5% on an H100) */
+    /* device: CUDA's sincospi (documented within 1 ulp in float, 2 in
+     * double), faster there than this polynomial: GGX mf_sample_visible in
+     * float 111 against 99 G samples/s on an H100 (make cuda-run) */
 #ifdef MF_USE_DOUBLE
     sincospi(MF_R(2.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), s, c);
 #else
