@@ -998,17 +998,18 @@ MF_INLINE mf_real mf_erfinv(mf_real y)
  * picks and negates without branches (an index and exact factors +-1). */
 MF_FORCE_INLINE void mf__sincos_2pi(mf_real u, mf_real *c, mf_real *s)
 {
+    u = mf_clamp(u, MF_R(0.0), MF_R(1.0));
 #if defined(__CUDA_ARCH__)
     /* device: CUDA's sincospi (documented within 1 ulp in float, 2 in
      * double), faster there than this polynomial: GGX mf_sample_visible in
      * float 111 against 99 G samples/s on an H100 (make cuda-run) */
 #ifdef MF_USE_DOUBLE
-    sincospi(MF_R(2.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), s, c);
+    sincospi(MF_R(2.0) * u, s, c);
 #else
-    sincospif(MF_R(2.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), s, c);
+    sincospif(MF_R(2.0) * u, s, c);
 #endif
 #else
-    mf_real q = MF_R(4.0) * mf_clamp(u, MF_R(0.0), MF_R(1.0)), t, t2, v[2];
+    mf_real q = MF_R(4.0) * u, t, t2, v[2];
     int k = (int)(q + MF_R(0.5));
     t = (q - (mf_real)k) * MF_R(1.57079632679489661923);
     t2 = t * t;
@@ -1419,6 +1420,13 @@ MF_INLINE mf_real mf__stream_next(unsigned int *s)
     u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
 #endif
     return u;
+}
+/* a proposal's next two uniforms, in this order (two mf__stream_next calls
+ * as the arguments of one call would leave their order to the compiler) */
+MF_INLINE void mf__stream_next2(unsigned int *s, mf_real *u1, mf_real *u2)
+{
+    *u1 = mf__stream_next(s);
+    *u2 = mf__stream_next(s);
 }
 
 /* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
@@ -4754,8 +4762,7 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
             r = vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
             if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
-            v1 = mf__stream_next(&st);   /* drawn in order: argument order is the compiler's */
-            v2 = mf__stream_next(&st);
+            mf__stream_next2(&st, &v1, &v2);
             m = mf_ggx_sample_visible(ap, ap, w, v1, v2);
         }
     } else {
@@ -4791,7 +4798,7 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             b = (a2 + z) / d2;
             if (mf__stream_next(&st) * cb * (a2 + z) * d2 < n1 * n2 * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b))) {
                 mf_real ab = MF_SQRT(b);
-                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                if (!fresh) mf__stream_next2(&st, &v1, &v2);
                 m = mf_ggx_sample_visible(ab, ab, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
@@ -5066,7 +5073,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     if (g > MF_R(2.0)) {
         for (it = 0; it < 64; ++it) {
             mf_real c2, q, gc, r;
-            if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+            if (!fresh) mf__stream_next2(&st, &v1, &v2);
             m = mf_ggx_sample_visible(ax, ay, w, v1, v2);
             c2 = m.z * m.z; q = mf__q(ax, ay, m); gc = g1 * c2;
             fresh = 0;
@@ -5104,7 +5111,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (mf__stream_next(&st) * (k < 4 ? c0 + th * sg * rho : c0p) * b1 <
                 n * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
-                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                if (!fresh) mf__stream_next2(&st, &v1, &v2);
                 m = mf__ggx_sample_visible_k(ax, ay, k1, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */

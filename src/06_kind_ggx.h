@@ -101,6 +101,13 @@ MF_INLINE mf_real mf__stream_next(unsigned int *s)
 #endif
     return u;
 }
+/* a proposal's next two uniforms, in this order (two mf__stream_next calls
+ * as the arguments of one call would leave their order to the compiler) */
+MF_INLINE void mf__stream_next2(unsigned int *s, mf_real *u1, mf_real *u2)
+{
+    *u1 = mf__stream_next(s);
+    *u2 = mf__stream_next(s);
+}
 
 /* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
  * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'

@@ -385,8 +385,7 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
             r = vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
             if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
-            v1 = mf__stream_next(&st);   /* drawn in order: argument order is the compiler's */
-            v2 = mf__stream_next(&st);
+            mf__stream_next2(&st, &v1, &v2);
             m = mf_ggx_sample_visible(ap, ap, w, v1, v2);
         }
     } else {
@@ -422,7 +421,7 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
             b = (a2 + z) / d2;
             if (mf__stream_next(&st) * cb * (a2 + z) * d2 < n1 * n2 * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b))) {
                 mf_real ab = MF_SQRT(b);
-                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                if (!fresh) mf__stream_next2(&st, &v1, &v2);
                 m = mf_ggx_sample_visible(ab, ab, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */

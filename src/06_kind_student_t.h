@@ -169,7 +169,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     if (g > MF_R(2.0)) {
         for (it = 0; it < 64; ++it) {
             mf_real c2, q, gc, r;
-            if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+            if (!fresh) mf__stream_next2(&st, &v1, &v2);
             m = mf_ggx_sample_visible(ax, ay, w, v1, v2);
             c2 = m.z * m.z; q = mf__q(ax, ay, m); gc = g1 * c2;
             fresh = 0;
@@ -207,7 +207,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (mf__stream_next(&st) * (k < 4 ? c0 + th * sg * rho : c0p) * b1 <
                 n * MF_R(0.5) * (MF_R(1.0) + MF_SQRT(MF_R(1.0) + t4 * b1))) {
                 mf_real k1 = MF_R(1.0) / (sg * MF_SQRT(b1));
-                if (!fresh) { v1 = mf__stream_next(&st); v2 = mf__stream_next(&st); }   /* in this order */
+                if (!fresh) mf__stream_next2(&st, &v1, &v2);
                 m = mf__ggx_sample_visible_k(ax, ay, k1, w, v1, v2);
                 fresh = 0;
                 if (m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;   /* float's cap edge: draw again */
