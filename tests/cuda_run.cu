@@ -127,8 +127,7 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
                            : mf_ibm_texel_bin(&w->ibm, (int)(f.u * (mf_real)w->ibm.width), (int)(f.v * (mf_real)w->ibm.height));
         if (!(w->skip & 32)) o[16] = mf_ibm_bin_weight(&w->ibm, bin, &f);
         // wi mirrored about h: a direction on the map's glints
-        mf_real oh = MF_R(2.0) * mf_dot(wo, h);
-        mf_vec3 wg = mf_vec3_make(oh * h.x - wo.x, oh * h.y - wo.y, oh * h.z - wo.z);
+        mf_vec3 wg = mf_reflect(wo, h);
         if (wg.z <= MF_R(0.0)) wg = wi;
         if (!(w->skip & 64)) o[17] = mf_ibm_brdf(&w->ibm, &f, wo, wg);
         if (!(w->skip & 128)) o[18] = mf_ibm_pdf(&w->ibm, &f, wo, wg);
@@ -254,7 +253,6 @@ int main(int argc, char **argv)
         CUDA_OK(cudaMemcpy(dibm, w.ibm.data, w.ibm.words * sizeof(unsigned int), cudaMemcpyHostToDevice));
         wd = w;
         wd.tab = mf_tabulated_rebase(&w.tab, dtab);
-        wd.ibm = w.ibm;
         wd.ibm.data = dibm;
         CUDA_OK(cudaMalloc((void **)&dout, sizeof(mf_real) * NOUT * (size_t)n));
         k_cases<<<(n + block - 1) / block, block>>>(wd, dout, n, first);
