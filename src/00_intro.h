@@ -201,7 +201,7 @@
  *          mixture of GGX, gamma-3 or gamma-4 GTR, built by mf_gtr with 4-24
  *          nodes as alpha falls; 4.7-18.4x GGX's Lambda in float: mf_ndf is
  *          larger, 376 bytes in float, 720 in double); GTR and Student-t NDF
- *          sampling by the closed-form inverse CDF with one pow (1.5-2.2x
+ *          sampling by the closed-form inverse CDF with one pow (1.7-2.4x
  *          GGX), visible normals by exact rejection from GGX and from exact
  *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at
  *          grazing views for any kind. LTC: rational
@@ -214,5 +214,7 @@
  *          paths; Beckmann visible normals in closed form at normal
  *          incidence; faster IBM queries, and a 1.5x faster IBM build with the
  *          same arrays; MF_FAST_MATH; solver iteration
- *          caps reported to tests (MF__SOLVER_DONE).
+ *          caps reported to tests (MF__SOLVER_DONE). The slope-space and GGX
+ *          visible-normal samplers take their azimuth from a polynomial
+ *          (CUDA's sincospi on the device) instead of libm sin / cos.
  */
