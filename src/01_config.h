@@ -193,6 +193,13 @@ typedef float mf_real;
 #else
 #define MF__PREFETCH(p) ((void)(p))
 #endif
+/* MF__CLZ32(v): leading zero bits of a nonzero 32-bit unsigned, where the
+ * compiler has an instruction for it (undefined here: a portable loop). */
+#if defined(__CUDA_ARCH__)
+#define MF__CLZ32(v) __clz((int)(v))
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__CLZ32(v) __builtin_clz(v)
+#endif
 /* MF_COLD: functions that device code may call but that host includers need
  * not compile (numerical samplers, tabulated and IBM queries, the generic
  * dispatch of the rarer kinds). Host builds declare them here and define them

@@ -362,9 +362,13 @@ MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
     return mf__ibm_get(ibm->data + ibm->off_at, (size_t)j, ibm->off_bits);
 }
 
-/* bit length of v (0 for 0), by halving (no loop over the bits) */
+/* bit length of v (0 for 0): one instruction where there is one, else by
+ * halving (no loop over the bits) */
 MF_INLINE int mf__ibm_bitlen32(unsigned int v)
 {
+#ifdef MF__CLZ32
+    return v ? 32 - MF__CLZ32(v) : 0;
+#else
     int k = 0;
     if (v >> 16) { k += 16; v >>= 16; }
     if (v >> 8) { k += 8; v >>= 8; }
@@ -372,6 +376,7 @@ MF_INLINE int mf__ibm_bitlen32(unsigned int v)
     if (v >> 2) { k += 2; v >>= 2; }
     if (v >> 1) { k += 1; v >>= 1; }
     return k + (int)v;
+#endif
 }
 
 /* stored kd-tree levels of a bin of n texels: floor(log2(n / 16)), within the tree's depth */
@@ -462,6 +467,7 @@ typedef struct mf__ibm_fp {
     int tiny;                  /* few, small, neither thin nor axis-aligned: texel areas row by row */
     int bx0, by0, bx1, by1;    /* direct: texels [bx0, bx1) x [by0, by1) (unwrapped) hold A */
     int rect;                  /* axis-aligned: every piece is a rectangle */
+    int inner;                 /* every corner in the first period: A is its only piece, unclipped */
     int row0, row1;            /* period rows touched */
     mf_real x[4], y[4];        /* corners in texels, counterclockwise, center in the first period */
     mf_real cx, cy, ax, ay, bx, by;   /* center and edges in texels */
@@ -575,7 +581,7 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
     int row, pieces = 0, edges_ok;
     p->mode = MF__IBM_NONE;
-    p->direct = p->few = p->tiny = 0;
+    p->direct = p->few = p->tiny = p->inner = 0;
     p->full = MF_R(0.0);
     if (!f) return;
     /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
@@ -624,6 +630,13 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         p->x[3] = p->cx - MF_R(0.5) * p->ax + sa * p->bx; p->y[3] = p->cy - MF_R(0.5) * p->ay + sa * p->by;
     }
     p->rect = (p->ay == MF_R(0.0) && p->bx == MF_R(0.0)) || (p->ax == MF_R(0.0) && p->by == MF_R(0.0));
+    {   /* clipping A to the period's row and column would keep its corners as they are */
+        mf_real lx = mf_min(mf_min(p->x[0], p->x[1]), mf_min(p->x[2], p->x[3]));
+        mf_real hx = mf_max(mf_max(p->x[0], p->x[1]), mf_max(p->x[2], p->x[3]));
+        mf_real ly = mf_min(mf_min(p->y[0], p->y[1]), mf_min(p->y[2], p->y[3]));
+        mf_real hy = mf_max(mf_max(p->y[0], p->y[1]), mf_max(p->y[2], p->y[3]));
+        p->inner = lx >= MF_R(0.0) && hx <= W && ly >= MF_R(0.0) && hy <= H;
+    }
     p->row0 = p->cy - ey >= MF_R(0.0) ? 0 : (int)MF_FLOOR((p->cy - ey) / H);   /* cy is in [0, H) */
     p->row1 = p->cy + ey < H ? 0 : (int)MF_FLOOR((p->cy + ey) / H);
     if (p->row1 > p->row0 && p->cy + ey == (mf_real)p->row1 * H) --p->row1;
@@ -660,8 +673,12 @@ MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row
                                  const mf_real *y, int n, mf__ibm_piece *pc)
 {
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, tx[12], ty[12], lx, ly, hx, hy, sx, sy;
-    int i, m = mf__ibm_clip_axis(x, y, n, 0, (mf_real)col * W, MF_R(1.0), tx, ty);
-    m = mf__ibm_clip_axis(tx, ty, m, 0, (mf_real)(col + 1) * W, MF_R(-1.0), pc->x, pc->y);
+    int i, m = n;
+    if (p->inner) for (i = 0; i < n; ++i) { pc->x[i] = x[i]; pc->y[i] = y[i]; }
+    else {
+        m = mf__ibm_clip_axis(x, y, n, 0, (mf_real)col * W, MF_R(1.0), tx, ty);
+        m = mf__ibm_clip_axis(tx, ty, m, 0, (mf_real)(col + 1) * W, MF_R(-1.0), pc->x, pc->y);
+    }
     if (m < 3) return 0;
     sx = (mf_real)col * W; sy = (mf_real)row * H;
     lx = hx = pc->x[0] - sx; ly = hy = pc->y[0] - sy;
@@ -1188,10 +1205,16 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         mf_real xs[12], ys[12], c0, c1, f0, f1, col;
         mf__ibm_piece pc;
         int row;
-        for (row = p->row0; row <= p->row1; ++row) {
-            int n = mf__ibm_slab(ibm, p, row, xs, ys);
-            if (n < 3) continue;
-            mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
+        for (row = p->inner ? 0 : p->row0; row <= (p->inner ? 0 : p->row1); ++row) {
+            int n = 4;
+            if (p->inner) {   /* one piece, A itself (row 0, column 0) */
+                for (i = 0; i < 4; ++i) { xs[i] = p->x[i]; ys[i] = p->y[i]; }
+                c0 = c1 = MF_R(0.0); f0 = MF_R(1.0); f1 = MF_R(0.0);
+            } else {
+                n = mf__ibm_slab(ibm, p, row, xs, ys);
+                if (n < 3) continue;
+                mf__ibm_slab_columns(ibm, row, xs, ys, n, &c0, &c1, &f0, &f1);
+            }
             for (col = c0; col <= c1; col += MF_R(1.0)) {
                 if (col >= f0 && col <= f1) continue;
                 if (p->tiny) {   /* the polygon is all the row sums need */
@@ -1233,7 +1256,8 @@ MF_INLINE int mf__ibm_near_extent(const mf_ibm *ibm, const mf_footprint *f, mf_r
     e[3] = MF_R(0.5) * (MF_FABS(f->ay) + MF_FABS(f->by)) * H + MF_R(1.5);
     if (!(e[2] < MF_R(0.25) * W) || !(e[3] < MF_R(0.25) * H)) return 0;
     e[0] = f->u * W - MF_R(0.5); e[1] = f->v * H - MF_R(0.5);
-    e[0] -= W * MF_FLOOR(e[0] / W); e[1] -= H * MF_FLOOR(e[1] / H);   /* into the first period */
+    if (!(e[0] >= MF_R(0.0) && e[0] < W)) e[0] -= W * MF_FLOOR(e[0] / W);   /* into the first period */
+    if (!(e[1] >= MF_R(0.0) && e[1] < H)) e[1] -= H * MF_FLOOR(e[1] / H);
     return 1;
 }
 
@@ -1349,11 +1373,11 @@ MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *b
     unsigned int tot = 0u, n, base, tab, q;
     int i, k, x, y;
     mf__ibm_box bx;
-    if (!mf__ibm_near_extent(ibm, f, e)) return 0;
     for (i = 0; i < nb; ++i) {
         tot += mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
         if (tot > 48u) return 0;
     }
+    if (!mf__ibm_near_extent(ibm, f, e)) return 0;
     bx = mf__ibm_extent_box(ibm, e);
     if (bx.ok) {
         /* the box does not wrap: compare the Morton codes' x and y bits with
