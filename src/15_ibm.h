@@ -127,6 +127,20 @@ MF_INLINE unsigned int mf__ibm_checksum(const unsigned int *w, size_t n)
     return h0 ^ (h1 * 0x9e3779b1u) ^ (h2 * 0x85ebca77u) ^ (h3 * 0xc2b2ae3du);
 }
 
+/* floor and ceiling of x as int, for |x| below 2^31 (coordinates in texels):
+ * the conversion and one compare (libm's floor is a call, or a longer
+ * sequence, on baseline x86-64) */
+MF_INLINE int mf__ibm_ifloor(mf_real x)
+{
+    int i = (int)x;
+    return i - (x < (mf_real)i);
+}
+MF_INLINE int mf__ibm_iceil(mf_real x)
+{
+    int i = (int)x;
+    return i + (x > (mf_real)i);
+}
+
 /* ---- bins (Sec. 5.4.2): b x b squares over [-1,1]^2 of (n.x, n.y) ---- */
 
 MF_INLINE int mf__ibm_cell(mf_real v, int b)
@@ -661,8 +675,8 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         p->tiny = p->direct && small && !thin && !p->rect;
     }
     if (p->direct) {
-        p->bx0 = (int)MF_FLOOR(p->cx - ex); p->bx1 = (int)MF_CEIL(p->cx + ex);
-        p->by0 = (int)MF_FLOOR(p->cy - ey); p->by1 = (int)MF_CEIL(p->cy + ey);
+        p->bx0 = mf__ibm_ifloor(p->cx - ex); p->bx1 = mf__ibm_iceil(p->cx + ex);
+        p->by0 = mf__ibm_ifloor(p->cy - ey); p->by1 = mf__ibm_iceil(p->cy + ey);
     }
 }
 
@@ -687,11 +701,11 @@ MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         lx = mf_min(lx, pc->x[i]); hx = mf_max(hx, pc->x[i]);
         ly = mf_min(ly, pc->y[i]); hy = mf_max(hy, pc->y[i]);
     }
-    pc->ox = (int)MF_FLOOR(lx); pc->oy = (int)MF_FLOOR(ly);
+    pc->ox = mf__ibm_ifloor(lx); pc->oy = mf__ibm_ifloor(ly);
     if (pc->ox < 0) pc->ox = 0;
     if (pc->oy < 0) pc->oy = 0;
     pc->bx0 = pc->ox; pc->by0 = pc->oy;
-    pc->bx1 = (int)MF_CEIL(hx); pc->by1 = (int)MF_CEIL(hy);
+    pc->bx1 = mf__ibm_iceil(hx); pc->by1 = mf__ibm_iceil(hy);
     if (pc->bx1 > ibm->width) pc->bx1 = ibm->width;
     if (pc->by1 > ibm->height) pc->by1 = ibm->height;
     if (pc->bx1 <= pc->bx0 || pc->by1 <= pc->by0) return 0;
@@ -749,8 +763,8 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         }
         pc->ix0 = pc->ix1 = pc->iy0 = pc->iy1 = 0;
         if (x1 > x0 && y1 > y0 && MF_FABS(x0) < MF_BIG && MF_FABS(y0) < MF_BIG) {
-            pc->ix0 = pc->ox + (int)MF_CEIL(x0); pc->ix1 = pc->ox + (int)MF_FLOOR(x1);
-            pc->iy0 = pc->oy + (int)MF_CEIL(y0); pc->iy1 = pc->oy + (int)MF_FLOOR(y1);
+            pc->ix0 = pc->ox + mf__ibm_iceil(x0); pc->ix1 = pc->ox + mf__ibm_ifloor(x1);
+            pc->iy0 = pc->oy + mf__ibm_iceil(y0); pc->iy1 = pc->oy + mf__ibm_ifloor(y1);
             if (pc->ix0 < pc->bx0) pc->ix0 = pc->bx0;
             if (pc->iy0 < pc->by0) pc->iy0 = pc->by0;
             if (pc->ix1 > pc->bx1) pc->ix1 = pc->bx1;
@@ -900,7 +914,7 @@ MF_INLINE mf_real mf__ibm_direct_rows(const mf_ibm *ibm, const mf__ibm_piece *pc
         if (n < 3) continue;
         lo = hi = bx[0];
         for (i = 1; i < n; ++i) { lo = mf_min(lo, bx[i]); hi = mf_max(hi, bx[i]); }
-        x0 = pc->ox + (int)MF_FLOOR(lo); x1 = pc->ox + (int)MF_CEIL(hi);
+        x0 = pc->ox + mf__ibm_ifloor(lo); x1 = pc->ox + mf__ibm_iceil(hi);
         if (x0 < pc->bx0) x0 = pc->bx0;
         if (x1 > pc->bx1) x1 = pc->bx1;
         for (tx = x0; tx < x1; ++tx) {
