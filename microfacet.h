@@ -3981,19 +3981,20 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
  * v_j) of opposite-signed values (no cancellation). */
 MF_INLINE mf_real mf__ibm_square_cut(const mf_real *v)
 {
-    int i, neg = 0, m = 0;
-    for (i = 0; i < 4; ++i) if (v[i] < MF_R(0.0)) { ++neg; m |= 1 << i; }
+    int k, neg = 0, m = 0;
+    for (k = 0; k < 4; ++k) if (v[k] < MF_R(0.0)) { ++neg; m |= 1 << k; }
     if (neg == 0) return MF_R(1.0);
     if (neg == 4) return MF_R(0.0);
-    for (i = 0; i < 4; ++i) {
-        int p = (i + 3) & 3, n = (i + 1) & 3, o = (i + 2) & 3;
-        mf_real a = v[i], tp = a / (a - v[p]), tn = a / (a - v[n]);
-        if (neg == 1 && (m >> i & 1)) return MF_R(1.0) - MF_R(0.5) * tp * tn;   /* corner i cut off */
-        if (neg == 3 && !(m >> i & 1)) return MF_R(0.5) * tp * tn;              /* only corner i kept */
-        if (neg == 2 && (m >> i & 1) && (m >> n & 1))                          /* edge i..n below */
-            return MF_R(1.0) - MF_R(0.5) * (tp + v[n] / (v[n] - v[o]));
+    if (m == 5 || m == 10) return MF_R(-1.0);   /* opposite corners below: not a single line */
+    {   /* the corner i of the case, by the sign mask (two bits per mask): the
+         * one below (neg 1), the one kept (neg 3), the first of the two
+         * below (neg 2); only its fractions are divided out */
+        int i = (int)((0x68fd210u >> (2 * m)) & 3u), p = (i + 3) & 3, n = (i + 1) & 3, o = (i + 2) & 3;
+        mf_real a = v[i], tp = a / (a - v[p]);
+        if (neg == 2) return MF_R(1.0) - MF_R(0.5) * (tp + v[n] / (v[n] - v[o]));   /* edge i..n below */
+        tp *= a / (a - v[n]);
+        return neg == 1 ? MF_R(1.0) - MF_R(0.5) * tp : MF_R(0.5) * tp;   /* corner i cut off / only corner i kept */
     }
-    return MF_R(-1.0);   /* opposite corners below: not a single line */
 }
 
 #endif /* MF_NO_IBM */
