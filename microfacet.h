@@ -6365,19 +6365,24 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
  * of short ranges (predictable, one cache line), else binary search */
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
+    /* bit `bit` of field i alone: one word read (fields are stored lowest
+     * bit first, one after another) */
     const unsigned int *pos = ibm->data + ibm->pos_at;
+    size_t w = (size_t)ibm->list_bits, b = (size_t)bit;
+#define MF__IBM_BIT(i) ((pos[((size_t)(i) * w + b) >> 5] >> (((size_t)(i) * w + b) & 31u)) & 1u)
     /* all on one side (common where a bin's texels cluster): two reads */
-    if (s >= e || ((mf__ibm_get(pos, s, ibm->list_bits) >> bit) & 1u)) return s;
-    if (!((mf__ibm_get(pos, e - 1u, ibm->list_bits) >> bit) & 1u)) return e;
+    if (s >= e || MF__IBM_BIT(s)) return s;
+    if (!MF__IBM_BIT(e - 1u)) return e;
     {   /* branchless lower bound: the first index with the bit set lies
          * in [s, s + n), e - 1 the last candidate */
         unsigned int n = e - s;
         while (n > 1u) {
             unsigned int h = n >> 1;
-            s += ((mf__ibm_get(pos, s + h - 1u, ibm->list_bits) >> bit) & 1u) ? 0u : h;
+            s += MF__IBM_BIT(s + h - 1u) ? 0u : h;
             n -= h;
         }
     }
+#undef MF__IBM_BIT
     return s;
 }
 
