@@ -6067,6 +6067,7 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
             if (pieces > MF_IBM_MAX_PIECES) { p->full = MF_R(0.0); return; }
         }
     p->mode = MF__IBM_EXACT;
+    if (p->full > MF_R(0.0)) p->inner = 0;   /* A is the whole period: counted as full */
     p->direct = p->full == MF_R(0.0) && MF_R(4.0) * ex * ey <= (mf_real)MF_IBM_DIRECT_TEXELS;
     /* a few texels, or thin: their clipped areas give |A| (see mf__ibm_weights) */
     {

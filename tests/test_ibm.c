@@ -456,19 +456,22 @@ static void test_weights(void)
                   mf_ibm_bin_weight(&ibm, -1, &f0) == 0 && mf_ibm_bin_weight(NULL, j, &f0) == 0,
                   "NaN center, NULL footprint, bad bin, NULL map: weight 0");
     }
-    /* whole periods: an aligned 3 x 2 period footprint and one beyond the cap
-     * both give the map's histogram */
+    /* whole periods: an aligned 3 x 2 period footprint, exactly the first
+     * period (its corners on the period's: one full period, no piece) and one
+     * beyond the cap all give the map's histogram */
     {
         mf_footprint f = fp_make(0.0, 0.0, 3.0, 0.0, 0.0, 2.0), g = fp_make(0.37, 0.61, 300.0, 41.0, -17.0, 250.0);
-        double e1 = 0, e2 = 0;
+        mf_footprint f1 = fp_make(0.5, 0.5, 1.0, 0.0, 0.0, 1.0);
+        double e1 = 0, e2 = 0, e3 = 0;
         int j;
         for (j = 0; j < mf_ibm_bin_count(&ibm); ++j) {
             double want = mf_ibm_bin_texels(&ibm, j) / (48.0 * 40.0);
             e1 = fmax(e1, fabs((double)mf_ibm_bin_weight(&ibm, j, &f) - want));
             e2 = fmax(e2, fabs((double)mf_ibm_bin_weight(&ibm, j, &g) - want));
+            e3 = fmax(e3, fabs((double)mf_ibm_bin_weight(&ibm, j, &f1) - want));
         }
-        snprintf(msg, sizeof msg, "whole periods counted from bin sizes (err %.2e), beyond the cap: the histogram (err %.2e)", e1, e2);
-        MFT_CHECK(e1 < MFT_TOL(1e-12, 1e-6) && e2 < MFT_TOL(1e-12, 1e-6), msg);
+        snprintf(msg, sizeof msg, "whole periods counted from bin sizes (err %.2e; exactly one period %.2e), beyond the cap: the histogram (err %.2e)", e1, e3, e2);
+        MFT_CHECK(e1 < MFT_TOL(1e-12, 1e-6) && e3 < MFT_TOL(1e-12, 1e-6) && e2 < MFT_TOL(1e-12, 1e-6), msg);
     }
     mf_ibm_release(&ibm);
     free(s);
