@@ -5722,6 +5722,13 @@ MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
     unsigned int v = (p[0] >> sh) | (((p[1] << 1) & 0xffffffffu) << (31u - sh));
     return w > 0 ? v & ((2u << (w - 1)) - 1u) & 0xffffffffu : 0u;
 }
+/* bit b of field i alone (mf__ibm_get(base, i, w) >> b & 1): one word read,
+ * fields being stored lowest bit first, one after another */
+MF_INLINE unsigned int mf__ibm_get_bit(const unsigned int *base, size_t i, int w, int b)
+{
+    size_t bit = i * (size_t)w + (size_t)b;
+    return (base[bit >> 5] >> (bit & 31u)) & 1u;
+}
 
 /* bits of x spread to the even positions (x < 2^16) and back */
 MF_INLINE unsigned int mf__ibm_spread(unsigned int x)
@@ -6068,6 +6075,7 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         }
     p->mode = MF__IBM_EXACT;
     if (p->full > MF_R(0.0)) p->inner = 0;   /* A is the whole period: counted as full */
+    if (p->inner) p->row0 = p->row1 = 0;      /* its only row (rounding in ey may reach the next) */
     p->direct = p->full == MF_R(0.0) && MF_R(4.0) * ex * ey <= (mf_real)MF_IBM_DIRECT_TEXELS;
     /* a few texels, or thin: their clipped areas give |A| (see mf__ibm_weights) */
     {
@@ -6366,24 +6374,20 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
  * of short ranges (predictable, one cache line), else binary search */
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
-    /* bit `bit` of field i alone: one word read (fields are stored lowest
-     * bit first, one after another) */
     const unsigned int *pos = ibm->data + ibm->pos_at;
-    size_t w = (size_t)ibm->list_bits, b = (size_t)bit;
-#define MF__IBM_BIT(i) ((pos[((size_t)(i) * w + b) >> 5] >> (((size_t)(i) * w + b) & 31u)) & 1u)
+    int w = ibm->list_bits;
     /* all on one side (common where a bin's texels cluster): two reads */
-    if (s >= e || MF__IBM_BIT(s)) return s;
-    if (!MF__IBM_BIT(e - 1u)) return e;
+    if (s >= e || mf__ibm_get_bit(pos, s, w, bit)) return s;
+    if (!mf__ibm_get_bit(pos, e - 1u, w, bit)) return e;
     {   /* branchless lower bound: the first index with the bit set lies
          * in [s, s + n), e - 1 the last candidate */
         unsigned int n = e - s;
         while (n > 1u) {
             unsigned int h = n >> 1;
-            s += MF__IBM_BIT(s + h - 1u) ? 0u : h;
+            s += mf__ibm_get_bit(pos, s + h - 1u, w, bit) ? 0u : h;
             n -= h;
         }
     }
-#undef MF__IBM_BIT
     return s;
 }
 
@@ -6625,7 +6629,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         mf_real xs[12], ys[12], c0, c1, f0, f1, col;
         mf__ibm_piece pc;
         int row;
-        for (row = p->inner ? 0 : p->row0; row <= (p->inner ? 0 : p->row1); ++row) {
+        for (row = p->row0; row <= p->row1; ++row) {
             int n = 4;
             if (p->inner) {   /* one piece, A itself (row 0, column 0) */
                 for (i = 0; i < 4; ++i) { xs[i] = p->x[i]; ys[i] = p->y[i]; }
