@@ -44,11 +44,16 @@
  *   index    b*b + 1 packed fields: start of bin j's block in the lists (the
  *            index I of Sec. 5.4.4)
  *   means    b*b words: mean normal of each bin, 16 + 16 bits inside the bin
- *   lists    packed fields, one block per bin: the inverse bin map B^-1 (Eq.
- *            5.17), the bin's texel positions as Morton codes, sorted; a bin of
- *            n >= MF_IBM_TREE_MIN texels puts first n and the top k levels of
- *            its kd-tree (forest F): the 2^k + 1 boundaries of its level-k nodes
- *            in its list, k = floor(log2(n / 16))
+ *   lists    packed fields of kx + ky bits, one block per bin: the inverse
+ *            bin map B^-1 (Eq. 5.17), the bin's texel positions as Morton
+ *            codes, sorted; a bin of n >= MF_IBM_TREE_MIN texels puts first
+ *            the top k levels of its kd-tree (forest F): the 2^k - 1 inner
+ *            boundaries of its level-k nodes in its list (the outer two are 0
+ *            and n), k = floor(log2(2 n / MF_IBM_TREE_MIN)): its level-k
+ *            nodes hold 10 to 20 texels on average (the leaf size of Sec.
+ *            5.4.4 is 10), so that the splits a traversal meets above its
+ *            leaves are mostly read, not searched; n follows from the
+ *            block's length n + 2^k - 1 (strictly increasing in n)
  *   bin map  N packed fields (row-major): the bin of each texel (Eq. 5.15),
  *            stored as ix | iy << s (s bits per axis)
  * The kd-trees split the larger side of the power-of-two box holding the map
@@ -58,9 +63,9 @@
  * stored boundaries, deeper splits are found by binary search on the node's
  * bit, so no pointers are stored at all. */
 #define MF_IBM_MAGIC 0x4d464942u          /* "BIFM" in little-endian bytes */
-#define MF_IBM_VERSION 1u
+#define MF_IBM_VERSION 2u                 /* 1 (0.2.0): n and all 2^k + 1 boundaries stored, wider fields */
 #define MF_IBM_LEAF 24                    /* leaf size L of Sec. 5.4.4 (10 there; 24 measured faster here) */
-#define MF_IBM_TREE_MIN 32                /* bins this large store the top of their kd-tree */
+#define MF_IBM_TREE_MIN 20                /* bins this large store the top of their kd-tree */
 #define MF_IBM_MAX_RES 1024               /* bins per axis at most (index memory b^2) */
 #define MF_IBM_MAX_RADIUS 8               /* neighbourhood radius in bins at most */
 #define MF_IBM_MAX_WINDOW 289             /* (2 MF_IBM_MAX_RADIUS + 1)^2 */
@@ -309,6 +314,51 @@ MF_INLINE mf_real mf__ibm_square_cut(const mf_real *v)
     }
 }
 
+/* bit length of v (0 for 0): one instruction where there is one, else by
+ * halving (no loop over the bits) */
+MF_INLINE int mf__ibm_bitlen32(unsigned int v)
+{
+#ifdef MF__CLZ32
+    return v ? 32 - MF__CLZ32(v) : 0;
+#else
+    int k = 0;
+    if (v >> 16) { k += 16; v >>= 16; }
+    if (v >> 8) { k += 8; v >>= 8; }
+    if (v >> 4) { k += 4; v >>= 4; }
+    if (v >> 2) { k += 2; v >>= 2; }
+    if (v >> 1) { k += 1; v >>= 1; }
+    return k + (int)v;
+#endif
+}
+
+/* stored kd-tree levels of a bin of n texels: floor(log2(2 n / MF_IBM_TREE_MIN)) (0 below it), within the tree's depth */
+MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
+{
+    int k = mf__ibm_bitlen32(n / (unsigned int)MF_IBM_TREE_MIN);
+    k = k < 24 ? k : 24;
+    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
+}
+
+/* the block length of a bin of n texels: n, or n + 2^k - 1 with the top k
+ * levels of its kd-tree (the inner boundaries of its level-k nodes) */
+MF_INLINE unsigned int mf__ibm_block_len(const mf_ibm *ibm, unsigned int n)
+{
+    return n < (unsigned int)MF_IBM_TREE_MIN ? n : n + (1u << mf__ibm_tree_levels(ibm, n)) - 1u;
+}
+
+/* The texel count of a bin whose block has length len: len = n + 2^k(n) - 1
+ * is strictly increasing in n; *k: the stored levels (0: none, len = n). */
+MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len, int *k)
+{
+    unsigned int n = len;
+    if (len < (unsigned int)MF_IBM_TREE_MIN) { *k = 0; return len; }
+    for (*k = mf__ibm_tree_levels(ibm, len); *k > 0; --*k) {
+        n = len + 1u - (1u << *k);
+        if (mf__ibm_tree_levels(ibm, n) == *k) return n;
+    }
+    return len;   /* none (not a valid block: mf_ibm_load rejects it) */
+}
+
 /* @cold */
 /* one field of `w` bits (w <= 32) of a packed array; reads the word after
  * the field's first without a branch (every packed section of a map ends
@@ -384,31 +434,6 @@ MF_INLINE unsigned int mf__ibm_off(const mf_ibm *ibm, int j)
     return mf__ibm_get(ibm->data + ibm->off_at, (size_t)j, ibm->off_bits);
 }
 
-/* bit length of v (0 for 0): one instruction where there is one, else by
- * halving (no loop over the bits) */
-MF_INLINE int mf__ibm_bitlen32(unsigned int v)
-{
-#ifdef MF__CLZ32
-    return v ? 32 - MF__CLZ32(v) : 0;
-#else
-    int k = 0;
-    if (v >> 16) { k += 16; v >>= 16; }
-    if (v >> 8) { k += 8; v >>= 8; }
-    if (v >> 4) { k += 4; v >>= 4; }
-    if (v >> 2) { k += 2; v >>= 2; }
-    if (v >> 1) { k += 1; v >>= 1; }
-    return k + (int)v;
-#endif
-}
-
-/* stored kd-tree levels of a bin of n texels: floor(log2(n / 16)), within the tree's depth */
-MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
-{
-    int k = mf__ibm_bitlen32(n >> 5);
-    k = k < 24 ? k : 24;
-    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
-}
-
 /* Node size 2^lx x 2^ly of the kd-trees at level l: the larger side split
  * first, x on ties (the order of the Morton code's bits). */
 MF_INLINE void mf__ibm_node_dims(const mf_ibm *ibm, int l, int *lx, int *ly)
@@ -426,21 +451,25 @@ MF_INLINE int mf__ibm_bin_empty(const mf_ibm *ibm, int j)
     return mf__ibm_off(ibm, j) == mf__ibm_off(ibm, j + 1);
 }
 
-/* Bin j's texel count; *base: the first of its positions, *tab: its level-k
- * node boundaries (relative to base), *k: the stored levels (0: none). */
+/* Bin j's texel count; *base: the first of its positions, *tab: its first
+ * inner level-k node boundary (boundary i, 0 < i < 2^k, is field tab + i - 1;
+ * values relative to base), *k: the stored levels (0: none). */
 MF_INLINE unsigned int mf__ibm_bin_info(const mf_ibm *ibm, int j, unsigned int *base, unsigned int *tab, int *k)
 {
-    unsigned int s = mf__ibm_off(ibm, j), len = mf__ibm_off(ibm, j + 1) - s, n;
-    if (len < (unsigned int)MF_IBM_TREE_MIN) { *base = s; *tab = s; *k = 0; return len; }
-    /* n from the block length len = n + 2 + 2^k(n), strictly increasing in
-     * n (the stored count is not read: one memory access less per bin) */
-    for (*k = mf__ibm_tree_levels(ibm, len);; --*k) {
-        n = len - 2u - (1u << *k);
-        if (*k == 0 || mf__ibm_tree_levels(ibm, n) == *k) break;
-    }
-    *tab = s + 1u;
-    *base = s + 2u + (1u << *k);
+    unsigned int s = mf__ibm_off(ibm, j), n = mf__ibm_block_texels(ibm, mf__ibm_off(ibm, j + 1) - s, k);
+    *tab = s;
+    *base = *k > 0 ? s + (1u << *k) - 1u : s;
     return n;
+}
+
+/* boundary i (0 <= i <= 2^k) of the level-k nodes of a bin of n texels
+ * whose inner boundaries start at field tab of the lists pos (w bits): its
+ * first node's start 0, its end n, else the stored field */
+MF_INLINE unsigned int mf__ibm_bound(const unsigned int *pos, int w, unsigned int tab, int k, unsigned int n, unsigned int i)
+{
+    if (i == 0u) return 0u;
+    if (i >= 1u << k) return n;
+    return mf__ibm_get(pos, (size_t)tab + (size_t)i - 1u, w);
 }
 
 MF_COLD int mf_ibm_bin_texels(const mf_ibm *ibm, int bin)
@@ -1154,7 +1183,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                 } else {
                     /* the split: stored down to level k, else binary search */
                     int l = depth - cur.lx - cur.ly, kk = lev[i];
-                    unsigned int m = l < kk ? base[i] + mf__ibm_get(pos, (size_t)tab[i] + (size_t)((2u * cur.pre + 1u) << (kk - l - 1)), ibm->list_bits)
+                    unsigned int m = l < kk ? base[i] + mf__ibm_get(pos, (size_t)tab[i] + (size_t)(((2u * cur.pre + 1u) << (kk - l - 1)) - 1u), ibm->list_bits)
                                             : mf__ibm_split(ibm, s, e, bit);
                     mm[i] = m;
                     if (m > s) any = 1;
@@ -1311,14 +1340,15 @@ MF_INLINE mf__ibm_box mf__ibm_near_box(const mf_ibm *ibm, const mf_footprint *f)
     return b;
 }
 
-/* 1 if bin j (its stored kd-tree top: k levels, boundaries at tab) has no
- * texel in box b: the nodes of the deepest stored level at which the box
- * meets at most 4, their texel counts from their boundaries (index reads
- * only). 0 when it may have one, or the bin stores no levels. */
-MF_INLINE int mf__ibm_box_empty(const mf_ibm *ibm, unsigned int tab, int k, const mf__ibm_box *b)
+/* 1 if a bin of n texels (its stored kd-tree top: k levels, inner
+ * boundaries at tab) has no texel in box b: the nodes of the deepest stored
+ * level at which the box meets at most 4, their texel counts from their
+ * boundaries (index reads only). 0 when it may have one, or the bin stores
+ * no levels. */
+MF_INLINE int mf__ibm_box_empty(const mf_ibm *ibm, unsigned int tab, int k, unsigned int n, const mf__ibm_box *b)
 {
     const unsigned int *pos = ibm->data + ibm->pos_at;
-    int l, lx = 0, ly = 0, gx, gy, d = ibm->kx + ibm->ky;
+    int l, lx = 0, ly = 0, gx, gy, d = ibm->kx + ibm->ky, w = ibm->list_bits;
     if (!b->ok || k <= 0) return 0;
     for (l = k; l > 0; --l) {
         mf__ibm_node_dims(ibm, l, &lx, &ly);
@@ -1328,27 +1358,26 @@ MF_INLINE int mf__ibm_box_empty(const mf_ibm *ibm, unsigned int tab, int k, cons
     for (gy = b->y0 >> ly; gy <= b->y1 >> ly; ++gy)
         for (gx = b->x0 >> lx; gx <= b->x1 >> lx; ++gx) {
             unsigned int pre = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)gx << lx, (unsigned int)gy << ly) >> (d - l);
-            if (mf__ibm_get(pos, (size_t)tab + ((size_t)pre << (k - l)), ibm->list_bits) !=
-                mf__ibm_get(pos, (size_t)tab + ((size_t)(pre + 1u) << (k - l)), ibm->list_bits))
+            if (mf__ibm_bound(pos, w, tab, k, n, pre << (k - l)) != mf__ibm_bound(pos, w, tab, k, n, (pre + 1u) << (k - l)))
                 return 0;
         }
     return 1;
 }
 
-/* Bin j (its block [s0, s1) of the lists: mf__ibm_off of j and j + 1)
+/* A bin (its block [s0, s1) of the lists: mf__ibm_off of j and j + 1)
  * against footprint f: 0 empty, 1 no texel near the footprint
  * (mf__ibm_box_empty), 2 it may have some. *b is f's box, computed here on
  * first need (b->ok < 0 before). */
-MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, int j, unsigned int s0, unsigned int s1, const mf_footprint *f, mf__ibm_box *b)
+MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, unsigned int s0, unsigned int s1, const mf_footprint *f, mf__ibm_box *b)
 {
-    unsigned int base, tab;
+    unsigned int n;
     int k;
     if (s0 == s1) return 0;
     if (s1 - s0 < (unsigned int)MF_IBM_TREE_MIN) return 2;   /* no stored levels */
     if (b->ok < 0) *b = mf__ibm_near_box(ibm, f);
     if (!b->ok) return 2;
-    mf__ibm_bin_info(ibm, j, &base, &tab, &k);
-    return mf__ibm_box_empty(ibm, tab, k, b) ? 1 : 2;
+    n = mf__ibm_block_texels(ibm, s1 - s0, &k);
+    return mf__ibm_box_empty(ibm, s0, k, n, b) ? 1 : 2;
 }
 
 /* The non-empty bins of the window around bin (cx, cy) within the radius,
@@ -1380,7 +1409,7 @@ MF_INLINE int mf__ibm_window(const mf_ibm *ibm, const mf_footprint *f, int cx, i
         for (x = x0; x <= x1; ++x) {
             int k = (cx + x) + b * (cy + y), c;
             s0 = s1; s1 = mf__ibm_off(ibm, k + 1);
-            c = mf__ibm_bin_near(ibm, k, s0, s1, f, &box);
+            c = mf__ibm_bin_near(ibm, s0, s1, f, &box);
             if (c == 0) continue;
             j[n] = k; dx[n] = x; dy[n] = y; near[n] = c; ++n;
         }
@@ -1442,7 +1471,7 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     {
         mf__ibm_box nb;
         nb.ok = -1;
-        if (mf__ibm_bin_near(ibm, bin, mf__ibm_off(ibm, bin), mf__ibm_off(ibm, bin + 1), f, &nb) < 2 || mf__ibm_far(ibm, f, &bin, 1))
+        if (mf__ibm_bin_near(ibm, mf__ibm_off(ibm, bin), mf__ibm_off(ibm, bin + 1), f, &nb) < 2 || mf__ibm_far(ibm, f, &bin, 1))
             return MF_R(0.0);   /* no footprint work */
     }
     mf__ibm_footprint(ibm, f, &p);
@@ -1712,7 +1741,7 @@ static size_t mf__ibm_layout(mf_ibm *ibm, int width, int height, int res, int ra
     ibm->list_len = list_len;
     ibm->off_bits = mf__ibm_bitlen(list_len);
     ibm->pos_bits = ibm->kx + ibm->ky > 0 ? ibm->kx + ibm->ky : 1;
-    ibm->list_bits = ibm->pos_bits > ibm->off_bits ? ibm->pos_bits : ibm->off_bits;
+    ibm->list_bits = ibm->pos_bits;   /* inner boundaries are below 2^pos_bits too */
     ibm->axis_bits = res > 1 ? mf__ibm_bitlen((size_t)res - 1u) : 1;
     ibm->bin_bits = 2 * ibm->axis_bits;
     ibm->off_at = MF__IBM_HEADER;
@@ -1888,11 +1917,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                 cur[rj] += rc;
             }
         }
-    /* block sizes: n, or n + 2 + 2^k with the top k levels of the kd-tree */
-    for (i = 0; i < bins; ++i) {
-        unsigned int c = cur[i];
-        start += c < (unsigned int)MF_IBM_TREE_MIN ? c : c + 2u + (1u << mf__ibm_tree_levels(&L, c));
-    }
+    /* block sizes: n, or n + 2^k - 1 with the top k levels of the kd-tree */
+    for (i = 0; i < bins; ++i) start += mf__ibm_block_len(&L, cur[i]);
     words = mf__ibm_layout(&L, width, height, res, radius, start);
     data = words ? (unsigned int *)MF_MALLOC(words * sizeof(unsigned int)) : 0;
     if (!data) {
@@ -1924,7 +1950,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
         }
         data[L.mean_at + i] = q;
         mf__ibm_put(data + L.off_at, i, L.off_bits, start);
-        start += c < (unsigned int)MF_IBM_TREE_MIN ? c : c + 2u + (1u << mf__ibm_tree_levels(&L, c));
+        start += mf__ibm_block_len(&L, c);
     }
     mf__ibm_put(data + L.off_at, bins, L.off_bits, start);
     MF_FREE(sums);
@@ -1946,17 +1972,16 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
         } else {
             int k = mf__ibm_tree_levels(&L, c);
             unsigned int kn = 1u << k;
-            mf__ibm_put(list, start, L.list_bits, c);
-            st[3u * i] = st[3u * i + 1u] = start + 2u + kn;
-            st[3u * i + 2u] = (unsigned int)k << 26;
-            start += c + 2u + kn;
+            st[3u * i] = st[3u * i + 1u] = start + kn - 1u;
+            st[3u * i + 2u] = (unsigned int)k << 26 | 1u;   /* node 0 starts at 0: not stored */
+            start += c + kn - 1u;
         }
     }
     MF_FREE(cur);
     /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
      * grouped by bin, each group sorted because the codes come in order -
-     * and the forest (Sec. 5.4.4): a bin's level-k node boundary is written
-     * when its first position at or past the node arrives. Runs of one bin
+     * and the forest (Sec. 5.4.4): a bin's inner level-k node boundary is
+     * written when its first position at or past the node arrives. Runs of one bin
      * keep their state in registers, and their positions gather in a word
      * that reaches memory when full (no read-modify-write chain per texel). */
     {
@@ -1982,7 +2007,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     tk = (int)(node >> 26);
                     node &= 0x03ffffffu;
                     base = st[3u * rj + 1u];
-                    tab = base - 1u - (1u << tk);
+                    tab = base - (1u << tk);   /* inner boundary `node` at tab + node */
                     shift = L.kx + L.ky - tk;
                     lim = node << shift;
                 }
@@ -2002,14 +2027,14 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
         }
     }
     MF_FREE(tmp);
-    /* the remaining node boundaries of each tree: the bin's count */
+    /* the remaining inner node boundaries of each tree: the bin's count */
     for (i = 0; i < bins; ++i) {
         unsigned int s = st[3u * i + 2u], node, kn, cnt;
         if (s == 0xffffffffu) continue;
         kn = 1u << (s >> 26);
         cnt = st[3u * i] - st[3u * i + 1u];
-        for (node = s & 0x03ffffffu; node <= kn; ++node)
-            mf__ibm_put(list, st[3u * i + 1u] - 1u - kn + node, L.list_bits, cnt);
+        for (node = s & 0x03ffffffu; node < kn; ++node)
+            mf__ibm_put(list, st[3u * i + 1u] - kn + node, L.list_bits, cnt);
     }
     MF_FREE(st);
     data[0] = MF_IBM_MAGIC;
@@ -2089,8 +2114,8 @@ static int mf__ibm_valid(mf_ibm *L, const unsigned int *w, size_t words)
         unsigned int v = mf__ibm_get(w + L->bin_at, j, L->bin_bits);
         if ((v & amask) >= (unsigned int)L->res || (v >> L->axis_bits) >= (unsigned int)L->res) return 0;
     }
-    /* the index and the blocks: contiguous and in range; the kd-tree tops
-     * monotone from 0 to n; the positions in the map, sorted, each in the
+    /* the index and the blocks: contiguous and in range, each of a length
+     * some texel count gives; the kd-tree tops monotone from 0 to n; the positions in the map, sorted, each in the
      * level-k node its boundaries give and in the bin the bin map gives it -
      * with N positions in all, every texel appears exactly once */
     if (mf__ibm_get(w + L->off_at, 0, L->off_bits) != 0u) return 0;
@@ -2102,16 +2127,13 @@ static int mf__ibm_valid(mf_ibm *L, const unsigned int *w, size_t words)
         if (s != prev_end || e < s || e > L->list_len) return 0;
         prev_end = e;
         if (e - s < (unsigned int)MF_IBM_TREE_MIN) { cnt = e - s; base = s; }
-        else {
-            cnt = mf__ibm_get(list, s, L->list_bits);
-            if (cnt < (unsigned int)MF_IBM_TREE_MIN || (size_t)cnt > n) return 0;
-            k = mf__ibm_tree_levels(L, cnt);
-            if ((size_t)e - s != (size_t)cnt + 2u + ((size_t)1 << k)) return 0;
-            tab = s + 1u;
-            base = tab + 1u + (1u << k);
-            if (mf__ibm_get(list, tab, L->list_bits) != 0u || mf__ibm_get(list, tab + (1u << k), L->list_bits) != cnt) return 0;
+        else {   /* a length some n >= MF_IBM_TREE_MIN gives (then k > 0) */
+            cnt = mf__ibm_block_texels(L, e - s, &k);
+            if (k == 0 || (size_t)cnt > n) return 0;
+            tab = s;
+            base = s + (1u << k) - 1u;
             for (t = 0; t < (1u << k); ++t)
-                if (mf__ibm_get(list, tab + t, L->list_bits) > mf__ibm_get(list, tab + t + 1u, L->list_bits)) return 0;
+                if (mf__ibm_bound(list, L->list_bits, tab, k, cnt, t) > mf__ibm_bound(list, L->list_bits, tab, k, cnt, t + 1u)) return 0;
         }
         total += cnt;
         shift = L->kx + L->ky - k;
@@ -2125,7 +2147,7 @@ static int mf__ibm_valid(mf_ibm *L, const unsigned int *w, size_t words)
             if (mf__ibm_get(w + L->bin_at, (size_t)y * (size_t)L->width + (size_t)x, L->bin_bits) != want) return 0;
             if (k > 0) {
                 unsigned int idx = code >> shift;
-                if (q < mf__ibm_get(list, tab + idx, L->list_bits) || q >= mf__ibm_get(list, tab + idx + 1u, L->list_bits)) return 0;
+                if (q < mf__ibm_bound(list, L->list_bits, tab, k, cnt, idx) || q >= mf__ibm_bound(list, L->list_bits, tab, k, cnt, idx + 1u)) return 0;
             }
         }
     }

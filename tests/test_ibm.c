@@ -423,6 +423,59 @@ static void check_weights(const char *name, const mf_real *n, int w, int h, doub
     free(wb);
 }
 
+/* The lists' block lengths (layout in 15_ibm.h): n + 2^k(n) - 1 for a bin
+ * with a stored kd-tree top is strictly increasing in n and gives n back;
+ * lengths it skips give no tree (k = 0), which mf_ibm_load refuses at or
+ * above MF_IBM_TREE_MIN. Every n up to 2^21, then every 997th up to 2^28
+ * (the largest map). A flat power-of-two map puts every texel in one bin:
+ * its inner node boundaries reach N - 1 and must fit the kx + ky bits of a
+ * position. */
+static void test_block_lengths(void)
+{
+    mf_ibm m;
+    unsigned int n, prev = 0u, step = 1u;
+    int bad = 0, k;
+    char msg[160];
+    memset(&m, 0, sizeof m);
+    m.kx = m.ky = 14;
+    for (n = 0u; n <= 1u << 28; n += step) {
+        unsigned int len = mf__ibm_block_len(&m, n), got = mf__ibm_block_texels(&m, len, &k), l;
+        int want_k = n < (unsigned int)MF_IBM_TREE_MIN ? 0 : mf__ibm_tree_levels(&m, n);
+        if (got != n || k != want_k || (n >= (unsigned int)MF_IBM_TREE_MIN) != (k > 0) || (n > 0u && len <= prev)) ++bad;
+        if (step == 1u && n > 0u)
+            for (l = prev + 1u; l < len; ++l) {   /* skipped lengths */
+                int k2;
+                mf__ibm_block_texels(&m, l, &k2);
+                if (k2 != 0) ++bad;
+            }
+        prev = len;
+        if (n >= 1u << 21) step = 997u;
+    }
+    snprintf(msg, sizeof msg, "block lengths n + 2^k - 1: increasing, n recovered, skipped lengths refused (%d bad)", bad);
+    MFT_CHECK(bad == 0, msg);
+    {
+        mf_real *fl = (mf_real *)malloc(sizeof(mf_real) * 3 * 64 * 64);
+        mf_ibm a, b;
+        mf_footprint f = { 0.3, 0.6, 0.25, 0.05, -0.1, 0.3 };
+        unsigned char *buf;
+        size_t bytes, i;
+        int j;
+        for (i = 0; i < 64 * 64; ++i) { fl[3 * i] = 0; fl[3 * i + 1] = 0; fl[3 * i + 2] = 1; }
+        mf_ibm_build(&a, fl, 64, 64, MF_R(0.01));
+        j = mf_ibm_bin_of(&a, mf_vec3_make(0, 0, 1));
+        bytes = mf_ibm_save(&a, NULL, 0);
+        buf = (unsigned char *)malloc(bytes);
+        mf_ibm_save(&a, buf, bytes);
+        MFT_CHECK(mf_ibm_bin_texels(&a, j) == 64 * 64 && mf_ibm_load(&b, buf, bytes) == MF_SUCCESS &&
+                      fabs((double)mf_ibm_bin_weight(&b, j, &f) - 1.0) < 1e-6,
+                  "flat 64x64 map: one bin of every texel, saved and loaded, weight 1");
+        mf_ibm_release(&a);
+        mf_ibm_release(&b);
+        free(buf);
+        free(fl);
+    }
+}
+
 static void test_weights(void)
 {
     mf_real *s = map_smooth(48, 40, 1.0, 11), *fl = map_flakes(64, 64, 4, 0.05, 12);
@@ -821,7 +874,7 @@ static void test_save_load(void)
         w = (unsigned int *)(void *)cpy;   /* malloc'd: aligned */
         if (k >= 4) memcpy(&w[7], &fa, 4);                         /* alpha outside the builder's clamp */
         if (k == 0) w[a.off_at + 1] ^= 1u;                        /* an index entry */
-        if (k == 1) w[a.pos_at + 3] ^= 1u << 7;                   /* a position or count */
+        if (k == 1) w[a.pos_at + 3] ^= 1u << 7;                   /* a position or tree boundary */
         if (k == 2) w[a.bin_at + 2] ^= 1u << 2;                   /* the bin map */
         if (k == 3) w[a.pos_at + 1] ^= 1u << 1;                   /* a tree boundary or position */
         w[15] = mf__ibm_checksum(w, bytes / 4);
@@ -836,9 +889,11 @@ static void test_save_load(void)
         memcpy(cpy, buf + 1, bytes);
         w = (unsigned int *)(void *)cpy;
         s0 = field_get(w + a.off_at, (size_t)k, a.off_bits);
-        t1 = field_get(w + a.pos_at, (size_t)s0 + 2u, a.list_bits);
-        t2 = field_get(w + a.pos_at, (size_t)s0 + 3u, a.list_bits);
-        field_set(w + a.pos_at, (size_t)s0 + 2u, a.list_bits, t1 < t2 ? t1 + 1u : t1 - 1u);
+        /* the block opens with the inner boundaries of its level-k nodes
+         * (k >= 2 here): move the first, against the second */
+        t1 = field_get(w + a.pos_at, (size_t)s0, a.list_bits);
+        t2 = field_get(w + a.pos_at, (size_t)s0 + 1u, a.list_bits);
+        field_set(w + a.pos_at, (size_t)s0, a.list_bits, t1 < t2 ? t1 + 1u : t1 - 1u);
         w[15] = mf__ibm_checksum(w, bytes / 4);
         if (mf_ibm_load(&b, cpy, bytes) != MF_ERROR_INVALID_DATA || b.data) ++bad;
     } else ++bad;
@@ -1058,6 +1113,7 @@ void test_ibm(void)
     test_slivers();
     test_build_errors();
     test_structure();
+    test_block_lengths();
     test_weights();
     test_texel_contribution();
     test_convergence();
