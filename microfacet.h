@@ -6238,39 +6238,61 @@ MF_INLINE int mf__ibm_classify(const mf__ibm_piece *pc, int x0, int y0, int x1, 
     return in;
 }
 
-/* |piece ∩ texel (tx, ty)| in texels: 1 inside, 0 outside, otherwise the unit
- * square clipped by the cutting edges (Sutherland-Hodgman) and its shoelace
- * area, in coordinates relative to the texel corner. */
-MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
+/* |piece ∩ box| for the box [X, X + W] x [Y, Y + H] (relative coordinates):
+ * W H inside, 0 outside, otherwise the box clipped by the cutting edges
+ * (Sutherland-Hodgman) and its shoelace area, in coordinates relative to the
+ * box's corner; elo, ehi: the least and largest of ea x + eb y over the box
+ * less its corner, per edge. One cutting edge: closed form. */
+MF_INLINE mf_real mf__ibm_rect_area(const mf__ibm_piece *pc, mf_real X, mf_real Y, mf_real W, mf_real H,
+                                    const mf_real *elo, const mf_real *ehi)
 {
-    mf_real X = (mf_real)(tx - pc->ox), Y = (mf_real)(ty - pc->oy), xa[16], ya[16], xb[16], yb[16];
-    mf_real cv[12];
+    mf_real xa[16], ya[16], xb[16], yb[16], cv[12];
     int i, cut[12], nc = 0, n = 4;
     if (pc->rect) {
-        mf_real w = mf_min(X + MF_R(1.0), pc->rx1) - mf_max(X, pc->rx0);
-        mf_real h = mf_min(Y + MF_R(1.0), pc->ry1) - mf_max(Y, pc->ry0);
+        mf_real w = mf_min(X + W, pc->rx1) - mf_max(X, pc->rx0);
+        mf_real h = mf_min(Y + H, pc->ry1) - mf_max(Y, pc->ry0);
         return w > MF_R(0.0) && h > MF_R(0.0) ? w * h : MF_R(0.0);
     }
     for (i = 0; i < pc->n; ++i) {
         mf_real v = pc->ea[i] * X + pc->eb[i] * Y + pc->ec[i];
-        if (v + pc->ehi[i] <= MF_R(0.0)) return MF_R(0.0);
-        if (v + pc->elo[i] < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
+        if (v + ehi[i] <= MF_R(0.0)) return MF_R(0.0);
+        if (v + elo[i] < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
     }
-    if (nc == 0) return MF_R(1.0);
-    if (nc == 1) {   /* one edge cuts the texel (most boundary texels): closed form */
-        mf_real a = pc->ea[cut[0]], b = pc->eb[cut[0]], v[4], r;
+    if (nc == 0) return W * H;
+    if (nc == 1) {   /* one edge cuts the box (most boundary texels): closed form */
+        mf_real a = pc->ea[cut[0]] * W, b = pc->eb[cut[0]] * H, v[4], r;
         v[0] = cv[0]; v[1] = cv[0] + a; v[2] = cv[0] + a + b; v[3] = cv[0] + b;
-        r = mf__ibm_square_cut(v);
-        if (r >= MF_R(0.0)) return r;
+        r = mf__ibm_square_cut(v);   /* the fraction of the box: the map to the unit square is affine */
+        if (r >= MF_R(0.0)) return r * W * H;
     }
-    xa[0] = MF_R(0.0); ya[0] = MF_R(0.0); xa[1] = MF_R(1.0); ya[1] = MF_R(0.0);
-    xa[2] = MF_R(1.0); ya[2] = MF_R(1.0); xa[3] = MF_R(0.0); ya[3] = MF_R(1.0);
+    xa[0] = MF_R(0.0); ya[0] = MF_R(0.0); xa[1] = W; ya[1] = MF_R(0.0);
+    xa[2] = W; ya[2] = H; xa[3] = MF_R(0.0); ya[3] = H;
     for (i = 0; i < nc && n >= 3; ++i) {
         int k;
         n = mf__ibm_clip_line(xa, ya, n, pc->ea[cut[i]], pc->eb[cut[i]], cv[i], xb, yb);
         for (k = 0; k < n; ++k) { xa[k] = xb[k]; ya[k] = yb[k]; }
     }
     return n >= 3 ? mf_max(mf__ibm_shoelace(xa, ya, n, MF_R(0.0), MF_R(0.0)), MF_R(0.0)) : MF_R(0.0);
+}
+
+/* |piece ∩ texel (tx, ty)| in texels (mf__ibm_rect_area of the unit square) */
+MF_INLINE mf_real mf__ibm_texel_area(const mf__ibm_piece *pc, int tx, int ty)
+{
+    return mf__ibm_rect_area(pc, (mf_real)(tx - pc->ox), (mf_real)(ty - pc->oy), MF_R(1.0), MF_R(1.0), pc->elo, pc->ehi);
+}
+
+/* |piece ∩ box [x0, x1) x [y0, y1)| in texels (mf__ibm_rect_area): the
+ * weight of a kd node all of whose texels lie in one bin */
+MF_INLINE mf_real mf__ibm_box_area(const mf__ibm_piece *pc, int x0, int y0, int x1, int y1)
+{
+    mf_real W = (mf_real)(x1 - x0), H = (mf_real)(y1 - y0), lo[12], hi[12];
+    int i;
+    for (i = 0; i < pc->n; ++i) {
+        mf_real a = pc->ea[i] * W, b = pc->eb[i] * H;
+        lo[i] = mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0));
+        hi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
+    }
+    return mf__ibm_rect_area(pc, (mf_real)(x0 - pc->ox), (mf_real)(y0 - pc->oy), W, H, lo, hi);
 }
 
 /* The bins whose weights a query needs: those of the window (cx + dx, cy + dy),
@@ -6445,7 +6467,8 @@ MF_INLINE int mf__ibm_cut_edges(const mf__ibm_piece *pc, int x0, int y0, int x1,
  * share the splits): each node is classified against the piece once; inside
  * nodes add their texel count (prefiltering, Fig. 5.4), outside nodes are
  * skipped, cut nodes descend down to leaves of at most MF_IBM_LEAF texels,
- * whose texels get exact areas. */
+ * whose texels get exact areas - unless a bin holds every texel of the node,
+ * whose exact area is then that of the node's box in the piece. */
 MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, const int *bins, int nb, mf_real *acc)
 {
     /* the current node (g[t]) and the second children still pending on its
@@ -6527,10 +6550,16 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
              * reject their texels outside it for less) */
             int sparse = nb > 1 && (1 << cur.lx) <= pc->bx1 - pc->bx0 && (1 << cur.ly) <= pc->by1 - pc->by0;
             int ek[12], ne = -1, box = 1;   /* the edges that may cut the node (leaves; -1: not yet known) */
+            unsigned int cells = (unsigned int)(x1 - cur.x0) * (unsigned int)(y1 - cur.y0);
             for (i = 0; i < nb; ++i) {
                 unsigned int s = cs[i], e = ce[i];
                 mm[i] = s;
                 if (s >= e) continue;
+                if (e - s == cells) {   /* the bin fills the node (flat regions): its area at once, exact */
+                    frac[i] += mf__ibm_box_area(pc, cur.x0, cur.y0, x1, y1);
+                    cs[i] = mm[i] = e;
+                    continue;
+                }
                 if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || !sparse || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
                     if (ne < 0) {
                         ne = pc->rect ? 0 : mf__ibm_cut_edges(pc, cur.x0, cur.y0, x1, y1, margin, ek);
@@ -12443,9 +12472,10 @@ static int mf__ibm_valid(mf_ibm *L, const unsigned int *w, size_t words)
         if ((v & amask) >= (unsigned int)L->res || (v >> L->axis_bits) >= (unsigned int)L->res) return 0;
     }
     /* the index and the blocks: contiguous and in range, each of a length
-     * some texel count gives; the kd-tree tops monotone from 0 to n; the positions in the map, sorted, each in the
-     * level-k node its boundaries give and in the bin the bin map gives it -
-     * with N positions in all, every texel appears exactly once */
+     * some texel count gives; the kd-tree tops monotone from 0 to n; the
+     * positions in the map, sorted, each in the level-k node its boundaries
+     * give and in the bin the bin map gives it - with N positions in all,
+     * every texel appears exactly once */
     if (mf__ibm_get(w + L->off_at, 0, L->off_bits) != 0u) return 0;
     for (j = 0; j < bins; ++j) {
         unsigned int s = mf__ibm_get(w + L->off_at, j, L->off_bits), e = mf__ibm_get(w + L->off_at, j + 1u, L->off_bits);

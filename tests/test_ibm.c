@@ -496,6 +496,16 @@ static void test_weights(void)
         free(s3);
         free(f2);
     }
+    {   /* one bin holding most texels (flakes of a peaked GTR: the rest
+         * scattered), so that it fills whole kd nodes, whose areas are then
+         * taken at once: power-of-two and other sizes, flake cells aligned
+         * with the nodes or not */
+        mf_real *p1 = map_flakes(128, 128, 4, 0.002, 27), *p2 = map_flakes(96, 80, 3, 0.002, 28);
+        check_weights("flakes 128x128, one bin of most texels, alpha 0.16", p1, 128, 128, 0.16, 60, 29);
+        check_weights("flakes 96x80, one bin of most texels, alpha 0.16", p2, 96, 80, 0.16, 60, 30);
+        free(p1);
+        free(p2);
+    }
     /* degenerate: zero area and NaN edges -> the texel at the center */
     mf_ibm_build(&ibm, s, 48, 40, MF_R(0.1));
     {
