@@ -1551,14 +1551,16 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
 {
     mf__ibm_set s;
     mf__ibm_fp p;
+    mf_vec3 tn[MF_IBM_MAX_WINDOW];   /* the set's bin normals (listed) */
     mf_real gx = MF_R(-1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
     mf_vec3 h;
-    int r = ibm->radius, b = ibm->res, cx, cy, i;
+    int r = ibm->radius, b = ibm->res, cx, cy, i, listed;
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
+    listed = p.mode == MF__IBM_EXACT && !p.direct;   /* normals read (tn) by the facing test below */
     mf__ibm_set_init(&s, cx, cy, r);
     /* a footprint of a few texels: the bins of its texels */
     if (p.mode == MF__IBM_EXACT && p.few) { if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0); }
@@ -1572,10 +1574,11 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
             if (verdict[i] == 2) { near[nb] = near[i]; ndx[nb] = ndx[i]; ndy[nb] = ndy[i]; ++nb; }
         if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
         for (i = 0; i < nb; ++i) {
-            if (p.mode == MF__IBM_EXACT && !p.direct) {
+            if (listed) {
                 mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
                 if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
+                tn[s.n] = t;
             }
             mf__ibm_set_add(&s, ndx[i], ndy[i], near[i]);
         }
@@ -1584,19 +1587,24 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
-        mf_real co, ci, ch, d, lo;
+        mf_real co, ci, ch, d, lo, so2;
         if (!(s.w[i] > MF_R(0.0))) continue;
-        t = mf_ibm_bin_normal(ibm, s.bin[i]);
+        t = listed ? tn[i] : mf_ibm_bin_normal(ibm, s.bin[i]);
         co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
         if (!(co > MF_R(0.0)) || !(ch > MF_R(0.0))) continue;
         xh = mf_cross(h, t); xo = mf_cross(wo, t);
         d = mf_beckmann_D(a, a, mf_vec3_make(MF_SQRT(mf_dot(xh, xh)), MF_R(0.0), ch));
         if (!(d > MF_R(0.0))) continue;
-        lo = mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(mf_dot(xo, xo)), MF_R(0.0), co));
+        /* Lambda below 3e-19 (a = cot / alpha > 6) adds nothing to 1 in
+         * float or double (Eq. 84 ~ exp(-a^2) / (2 a^3 sqrt(pi))): its
+         * exp and erfc spared, the sums bit for bit the same */
+        so2 = mf_dot(xo, xo);
+        lo = MF_R(36.0) * a * a * so2 < co * co ? MF_R(0.0) : mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(so2), MF_R(0.0), co));
         spdf += s.w[i] * d / (MF_R(4.0) * co * (MF_R(1.0) + lo));
         if (want_f && ci > MF_R(0.0)) {
             mf_vec3 xi = mf_cross(wi, t);
-            mf_real li = mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(mf_dot(xi, xi)), MF_R(0.0), ci));
+            mf_real si2 = mf_dot(xi, xi);
+            mf_real li = MF_R(36.0) * a * a * si2 < ci * ci ? MF_R(0.0) : mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(si2), MF_R(0.0), ci));
             if (gx < MF_R(0.0))
                 gx = ibm->has_shadow ? MF_R(1.0) / (MF_R(1.0) + mf_lambda(&ibm->shadow, wo) + mf_lambda(&ibm->shadow, wi)) : MF_R(1.0);
             sf += s.w[i] * d * gx / ((MF_R(1.0) + lo + li) * MF_R(4.0) * wo.z * wi.z);
