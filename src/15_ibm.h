@@ -1551,16 +1551,14 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
 {
     mf__ibm_set s;
     mf__ibm_fp p;
-    mf_vec3 tn[MF_IBM_MAX_WINDOW];   /* the set's bin normals (listed) */
     mf_real gx = MF_R(-1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
     mf_vec3 h;
-    int r = ibm->radius, b = ibm->res, cx, cy, i, listed;
+    int r = ibm->radius, b = ibm->res, cx, cy, i;
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
-    listed = p.mode == MF__IBM_EXACT && !p.direct;   /* normals read (tn) by the facing test below */
     mf__ibm_set_init(&s, cx, cy, r);
     /* a footprint of a few texels: the bins of its texels */
     if (p.mode == MF__IBM_EXACT && p.few) { if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0); }
@@ -1574,11 +1572,10 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
             if (verdict[i] == 2) { near[nb] = near[i]; ndx[nb] = ndx[i]; ndy[nb] = ndy[i]; ++nb; }
         if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
         for (i = 0; i < nb; ++i) {
-            if (listed) {
+            if (p.mode == MF__IBM_EXACT && !p.direct) {
                 mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
                 if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
-                tn[s.n] = t;
             }
             mf__ibm_set_add(&s, ndx[i], ndy[i], near[i]);
         }
@@ -1589,7 +1586,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
         mf_vec3 t, xh, xo;
         mf_real co, ci, ch, d, lo, so2;
         if (!(s.w[i] > MF_R(0.0))) continue;
-        t = listed ? tn[i] : mf_ibm_bin_normal(ibm, s.bin[i]);
+        t = mf_ibm_bin_normal(ibm, s.bin[i]);
         co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
         if (!(co > MF_R(0.0)) || !(ch > MF_R(0.0))) continue;
         xh = mf_cross(h, t); xo = mf_cross(wo, t);
