@@ -1538,6 +1538,16 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
     return n;
 }
 
+/* The flake Beckmann Lambda of a direction at sin^2 s2 and cosine c from a
+ * bin normal; 0 where it is below 3e-19 (a = cot / alpha > 6), which adds
+ * nothing to 1 + Lambda in float or double (Eq. 84 ~ exp(-a^2) / (2 a^3
+ * sqrt(pi))): its exp and erfc spared, the sums bit for bit the same. */
+MF_INLINE mf_real mf__ibm_flake_lambda(mf_real alpha, mf_real s2, mf_real c)
+{
+    if (MF_R(36.0) * alpha * alpha * s2 < c * c) return MF_R(0.0);
+    return mf_beckmann_lambda(alpha, alpha, mf_vec3_make(MF_SQRT(s2), MF_R(0.0), c));
+}
+
 /* The lobes of the bins around beta(h): for each non-empty bin j of the
  * neighbourhood with wo.t_j > 0, the texel contribution C (Eq. 3.29, no
  * Fresnel) and the sampling density of wi through j,
@@ -1584,7 +1594,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
-        mf_real co, ci, ch, d, lo, so2;
+        mf_real co, ci, ch, d, lo;
         if (!(s.w[i] > MF_R(0.0))) continue;
         t = mf_ibm_bin_normal(ibm, s.bin[i]);
         co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
@@ -1592,16 +1602,11 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
         xh = mf_cross(h, t); xo = mf_cross(wo, t);
         d = mf_beckmann_D(a, a, mf_vec3_make(MF_SQRT(mf_dot(xh, xh)), MF_R(0.0), ch));
         if (!(d > MF_R(0.0))) continue;
-        /* Lambda below 3e-19 (a = cot / alpha > 6) adds nothing to 1 in
-         * float or double (Eq. 84 ~ exp(-a^2) / (2 a^3 sqrt(pi))): its
-         * exp and erfc spared, the sums bit for bit the same */
-        so2 = mf_dot(xo, xo);
-        lo = MF_R(36.0) * a * a * so2 < co * co ? MF_R(0.0) : mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(so2), MF_R(0.0), co));
+        lo = mf__ibm_flake_lambda(a, mf_dot(xo, xo), co);
         spdf += s.w[i] * d / (MF_R(4.0) * co * (MF_R(1.0) + lo));
         if (want_f && ci > MF_R(0.0)) {
             mf_vec3 xi = mf_cross(wi, t);
-            mf_real si2 = mf_dot(xi, xi);
-            mf_real li = MF_R(36.0) * a * a * si2 < ci * ci ? MF_R(0.0) : mf_beckmann_lambda(a, a, mf_vec3_make(MF_SQRT(si2), MF_R(0.0), ci));
+            mf_real li = mf__ibm_flake_lambda(a, mf_dot(xi, xi), ci);
             if (gx < MF_R(0.0))
                 gx = ibm->has_shadow ? MF_R(1.0) / (MF_R(1.0) + mf_lambda(&ibm->shadow, wo) + mf_lambda(&ibm->shadow, wi)) : MF_R(1.0);
             sf += s.w[i] * d * gx / ((MF_R(1.0) + lo + li) * MF_R(4.0) * wo.z * wi.z);
@@ -2002,16 +2007,10 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     start = 0u;
     for (i = 0; i < bins; ++i) {
         unsigned int c = cur[i];
-        if (c < (unsigned int)MF_IBM_TREE_MIN) {
-            st[3u * i] = st[3u * i + 1u] = start; st[3u * i + 2u] = 0xffffffffu;
-            start += c;
-        } else {
-            int k = mf__ibm_tree_levels(&L, c);
-            unsigned int kn = 1u << k;
-            st[3u * i] = st[3u * i + 1u] = start + kn - 1u;
-            st[3u * i + 2u] = (unsigned int)k << 26 | 1u;   /* node 0 starts at 0: not stored */
-            start += c + kn - 1u;
-        }
+        unsigned int len = mf__ibm_block_len(&L, c);
+        st[3u * i] = st[3u * i + 1u] = start + (len - c);   /* after the tree's inner boundaries */
+        st[3u * i + 2u] = len == c ? 0xffffffffu : (unsigned int)mf__ibm_tree_levels(&L, c) << 26 | 1u;   /* node 0 starts at 0: not stored */
+        start += len;
     }
     MF_FREE(cur);
     /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
