@@ -575,6 +575,13 @@ static double b_plain_G2(const mf_ndf *d)
 {
     LOOP(MF_R(1.0) / (MF_R(1.0) + plain_ggx_lambda(d->ax, d->ay, g_wo[i]) + plain_ggx_lambda(d->ax, d->ay, g_wi[i])));
 }
+/* the same work as mf_G2 (Heitz 2014 Eq. 99 with its facing tests chi+(wo.wm)
+ * chi+(wi.wm) and wo.z, wi.z > 0), written plainly */
+static double b_plain_G2_facing(const mf_ndf *d)
+{
+    LOOP((g_wo[i].z > MF_R(0.0) && g_wi[i].z > MF_R(0.0) && mf_dot(g_wo[i], g_wm[i]) > MF_R(0.0) && mf_dot(g_wi[i], g_wm[i]) > MF_R(0.0))
+         ? MF_R(1.0) / (MF_R(1.0) + plain_ggx_lambda(d->ax, d->ay, g_wo[i]) + plain_ggx_lambda(d->ax, d->ay, g_wi[i])) : MF_R(0.0));
+}
 static double b_fresnel(const mf_ndf *d) { (void)d; LOOP(mf_fresnel_conductor(g_wo[i].z, MF_R(0.2), MF_R(3.9))); }
 
 /* ---- baseline: Beckmann visible normals by slope-space inversion (Heitz &
@@ -887,6 +894,9 @@ static void bench_core(const struct bench_kind *ks, int ggx_only)
         printf("bench ggx_D_generic %.2f ratio=%.3f\n", od, od / pd);
         printf("bench ggx_G2_plain_baseline %.2f\n", pg);
         printf("bench ggx_G2_generic %.2f ratio=%.3f\n", og, og / pg);
+        run_pair(b_plain_G2_facing, b_G2, g, &pg, &og);
+        printf("bench ggx_G2_plain_facing_baseline %.2f\n", pg);
+        printf("bench ggx_G2_generic_vs_facing %.2f ratio=%.3f\n", og, og / pg);
         run_pair(b_vndf_pdf, b_bounded_pdf, g, &base, &ours);
         printf("bench ggx_vndf_sample_pdf_baseline %.2f\n", base);
         printf("bench ggx_bounded_vndf_sample_pdf %.2f ratio=%.3f\n", ours, ours / base);
