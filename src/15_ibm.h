@@ -1411,6 +1411,32 @@ MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, unsigned int s0, unsigned int 
     return mf__ibm_box_empty(ibm, s0, k, n, b) ? 1 : 2;
 }
 
+/* Row y of the window around bin (cx, cy) within radius r, dx^2 + dy^2 <=
+ * r(r+1), clipped to the bin map: its cells x0 .. x1 (dx), 0 when none. */
+MF_INLINE int mf__ibm_window_row(int res, int r, int cx, int cy, int y, int *x0, int *x1)
+{
+    int a = -r, e = r;
+    if (cy + y < 0 || cy + y >= res) return 0;
+    while (a * a + y * y > r * (r + 1)) { ++a; --e; }
+    if (cx + a < 0) a = -cx;
+    if (cx + e >= res) e = res - 1 - cx;
+    *x0 = a; *x1 = e;
+    return e >= a;
+}
+
+/* 1 if every bin of the window around (cx, cy) is empty: a row's bins are
+ * consecutive, so its blocks are empty when its first bin starts where its
+ * last ends (two index reads a row) */
+MF_INLINE int mf__ibm_window_empty(const mf_ibm *ibm, int cx, int cy)
+{
+    int r = ibm->radius, b = ibm->res, x0, x1, y;
+    for (y = -r; y <= r; ++y)
+        if (mf__ibm_window_row(b, r, cx, cy, y, &x0, &x1) &&
+            mf__ibm_off(ibm, (cx + x0) + b * (cy + y)) != mf__ibm_off(ibm, (cx + x1 + 1) + b * (cy + y)))
+            return 0;
+    return 1;
+}
+
 /* The non-empty bins of the window around bin (cx, cy) within the radius,
  * dx^2 + dy^2 <= r(r+1), in scan order: bin j[i] at (dx[i], dy[i]) and
  * mf__ibm_bin_near's verdict near[i] (1: none of its texels near the
@@ -1429,14 +1455,12 @@ MF_INLINE int mf__ibm_window(const mf_ibm *ibm, const mf_footprint *f, int cx, i
     }
     for (y = -r; y <= r; ++y) {
         unsigned int s0, s1;
-        int x0 = -r, x1 = r;
-        if (cy + y < 0 || cy + y >= b) continue;
-        while (x0 * x0 + y * y > r * (r + 1)) { ++x0; --x1; }   /* the row's cells within the radius */
-        if (cx + x0 < 0) x0 = -cx;
-        if (cx + x1 >= b) x1 = b - 1 - cx;
-        if (x1 < x0) continue;
-        /* neighbours in a row share their block boundary: one read per bin */
+        int x0, x1;
+        if (!mf__ibm_window_row(b, r, cx, cy, y, &x0, &x1)) continue;
+        /* neighbours in a row share their block boundary: one read per bin,
+         * none past the two ends of a row without texels */
         s1 = mf__ibm_off(ibm, (cx + x0) + b * (cy + y));
+        if (s1 == mf__ibm_off(ibm, (cx + x1 + 1) + b * (cy + y))) continue;
         for (x = x0; x <= x1; ++x) {
             int k = (cx + x) + b * (cy + y), c;
             s0 = s1; s1 = mf__ibm_off(ibm, k + 1);
@@ -1567,6 +1591,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
+    if (mf__ibm_window_empty(ibm, cx, cy)) return MF_R(0.0);   /* before any footprint work */
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
