@@ -1591,7 +1591,11 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
-    if (mf__ibm_window_empty(ibm, cx, cy)) return MF_R(0.0);   /* before any footprint work */
+    /* a neighbourhood without texels: 0 before any footprint work (but for
+     * footprints of at most 16 texels, whose few bin reads cost less) */
+    if (!(f && (mf_real)ibm->width * (mf_real)ibm->height * (MF_FABS(f->ax) + MF_FABS(f->bx)) * (MF_FABS(f->ay) + MF_FABS(f->by)) <= MF_R(16.0)) &&
+        mf__ibm_window_empty(ibm, cx, cy))
+        return MF_R(0.0);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
