@@ -6447,7 +6447,14 @@ MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned
 typedef struct mf__ibm_frame {
     int x0, y0, lx, ly;
     unsigned int pre;               /* the node's index in its level (its code prefix) */
+    unsigned int act;               /* bit i: bin i has texels in the node */
 } mf__ibm_frame;
+
+/* the lowest set bit's index of v != 0 */
+MF_INLINE int mf__ibm_low_bit(unsigned int v)
+{
+    return mf__ibm_bitlen32(v & (0u - v)) - 1;
+}
 
 /* The edges of a piece that may cut box [x0,x1) x [y0,y1) (texels), listed
  * in k, their count returned: those whose least value over the box is below
@@ -6501,7 +6508,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     /* rounding bound of the edge functions of the piece's coordinates (at
      * most S, the texels its box spans, each), with room to spare */
     mf_real margin = MF_R(64.0) * (mf_real)MF_EPS * ((mf_real)(pc->bx1 - pc->ox + pc->by1 - pc->oy) + MF_R(2.0));
-    g[1].x0 = 0; g[1].y0 = 0; g[1].lx = ibm->kx; g[1].ly = ibm->ky; g[1].pre = 0u;
+    g[1].x0 = 0; g[1].y0 = 0; g[1].lx = ibm->kx; g[1].ly = ibm->ky; g[1].pre = 0u; g[1].act = 0u;
     r[0] = rows[0]; r[1] = rows[1]; r[2] = rows[2];   /* the rows above: set as reached */
     for (i = 0; i < nb; ++i) {
         unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]);
@@ -6509,23 +6516,27 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
         r[0][i] = base[i] + nt;
         cnt[i] = 0u;
         frac[i] = MF_R(0.0);
+        if (nt > 0u) g[1].act |= 1u << i;
     }
+    /* a node visits only the bins with texels in it (its act bits): the
+     * rows of the others are neither read nor written */
     for (;;) {
         mf__ibm_frame cur = g[t];
-        unsigned int *cs = r[t], *ce = r[t - 1], *mm = r[t + 1];
-        int x1, y1, c = 2, any = 0;
+        unsigned int *cs = r[t], *ce = r[t - 1], *mm = r[t + 1], m1, lm = 0u, rm = 0u;
+        int x1, y1, c = 2;
         if (jump) {
             /* down to the least node that holds the texels of every range at
              * once (codes sorted: the common prefix of the least and the
              * largest), past the nodes of one child (clustered texels) */
             unsigned int lo = 0xffffffffu, hi = 0u;
             jump = 0;
-            for (i = 0; i < nb; ++i)
-                if (cs[i] < ce[i]) {
-                    unsigned int c0 = mf__ibm_get(pos, cs[i], ibm->list_bits), c1 = mf__ibm_get(pos, ce[i] - 1u, ibm->list_bits);
-                    lo = c0 < lo ? c0 : lo;
-                    hi = c1 > hi ? c1 : hi;
-                }
+            for (m1 = cur.act; m1; m1 &= m1 - 1u) {
+                unsigned int c0, c1;
+                i = mf__ibm_low_bit(m1);
+                c0 = mf__ibm_get(pos, cs[i], ibm->list_bits); c1 = mf__ibm_get(pos, ce[i] - 1u, ibm->list_bits);
+                lo = c0 < lo ? c0 : lo;
+                hi = c1 > hi ? c1 : hi;
+            }
             if (lo > hi) c = -1;   /* no texel */
             else {
                 unsigned int d;
@@ -6544,19 +6555,19 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
         if (y1 > ibm->height) y1 = ibm->height;
         if (c == 2) c = mf__ibm_classify(pc, cur.x0, cur.y0, x1, y1);
         if (c > 0) {
-            for (i = 0; i < nb; ++i) cnt[i] += ce[i] - cs[i];
+            for (m1 = cur.act; m1; m1 &= m1 - 1u) { i = mf__ibm_low_bit(m1); cnt[i] += ce[i] - cs[i]; }
         } else if (c == 0) {
-            int bit = cur.lx + cur.ly - 1, rany = 0;
+            int bit = cur.lx + cur.ly - 1;
             /* sparse leaves are split further in batches where the node is no
              * wider than the piece's box (larger ones: the tests on the codes
              * reject their texels outside it for less) */
             int sparse = nb > 1 && (1 << cur.lx) <= pc->bx1 - pc->bx0 && (1 << cur.ly) <= pc->by1 - pc->by0;
             int ek[12], ne = -1, box = 1;   /* the edges that may cut the node (leaves; -1: not yet known) */
             unsigned int cells = (unsigned int)(x1 - cur.x0) * (unsigned int)(y1 - cur.y0);
-            for (i = 0; i < nb; ++i) {
-                unsigned int s = cs[i], e = ce[i];
-                mm[i] = s;
-                if (s >= e) continue;
+            for (m1 = cur.act; m1; m1 &= m1 - 1u) {
+                unsigned int s, e;
+                i = mf__ibm_low_bit(m1);
+                s = cs[i]; e = ce[i];
                 if (e - s == cells) {   /* the bin fills the node (flat regions): its area at once, exact */
                     frac[i] += mf__ibm_box_area(pc, cur.x0, cur.y0, x1, y1);
                     cs[i] = mm[i] = e;
@@ -6616,26 +6627,27 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                     unsigned int m = l < kk ? base[i] + mf__ibm_get(pos, (size_t)tab[i] + (size_t)(((2u * cur.pre + 1u) << (kk - l - 1)) - 1u), ibm->list_bits)
                                             : mf__ibm_split(ibm, s, e, bit);
                     mm[i] = m;
-                    if (m > s) any = 1;
-                    if (e > m) rany = 1;
+                    if (m > s) lm |= 1u << i;
+                    if (e > m) rm |= 1u << i;
                 }
             }
-            if (bit >= 0 && (any || rany)) {
+            if (bit >= 0 && (lm | rm)) {
                 mf__ibm_frame right;
                 if (cur.lx >= cur.ly) { --cur.lx; right.x0 = cur.x0 + (1 << cur.lx); right.y0 = cur.y0; }
                 else { --cur.ly; right.x0 = cur.x0; right.y0 = cur.y0 + (1 << cur.ly); }
                 right.lx = cur.lx; right.ly = cur.ly;
                 cur.pre *= 2u;
                 right.pre = cur.pre + 1u;
+                cur.act = lm; right.act = rm;
                 /* one child: its ranges are the node's (the split at
                  * an end for every bin) */
-                if (any && rany && t <= MF__IBM_STACK) {   /* (t <= depth + 1 <= 33 always) */
+                if (lm && rm && t <= MF__IBM_STACK) {   /* (t <= depth + 1 <= 33 always) */
                     r[t] = mm; r[t + 1] = cs;
                     g[t] = right;
                     g[++t] = cur;
                     if (t + 1 > top) { top = t + 1; r[top] = rows[top]; }
                 } else {
-                    g[t] = any ? cur : right;
+                    g[t] = lm ? cur : right;
                     jump = 1;
                 }
                 continue;
