@@ -3898,8 +3898,8 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * union of whole periods, otherwise off by at most the cut cells' share of
  * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
  * the bin of the texel at the center, else 0; non-finite center: 0.
- * Cost: an empty bin (or, for the queries below, an empty neighbourhood)
- * returns before any footprint work, and so does a bin whose stored kd-tree
+ * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
+ * two index reads a window row) returns before any footprint work, and so does a bin whose stored kd-tree
  * top has no texel near the footprint, or a bin of a few texels none of
  * which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
  * texels visit the box (its bin-map rows prefetched), reading each texel's
