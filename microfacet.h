@@ -1219,20 +1219,29 @@ MF_FORCE_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
 }
 
 /* wm from an unstretched slope direction (cos phi, sin phi) and squared unit
- * slope radius r2, stretched by (ax, ay): wm ~ (ax r cos, ay r sin, 1). */
+ * slope radius r2, stretched by (ax, ay), not normalized: (ax r cos, ay r
+ * sin, 1), or (ax cos, ay sin, 0) where r2 overflows. */
+MF_FORCE_INLINE mf_vec3 mf__slope_dir(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
+{
+    if (!(r2 < MF_R(1e30))) return mf_vec3_make(ax * cp, ay * sp, MF_R(0.0));
+    r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
+    return mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0));
+}
 MF_FORCE_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
 {
-    if (!(r2 < MF_R(1e30))) return mf_normalize(mf_vec3_make(ax * cp, ay * sp, MF_R(0.0)));
-    r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
-    return mf_normalize(mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0)));
+    return mf_normalize(mf__slope_dir(ax, ay, r2, cp, sp));
 }
 
-/* wm for the squared unit slope radius r2 at the azimuth 2 pi u2 (mf__wm_from_slope). */
-MF_FORCE_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
+/* the same at the azimuth 2 pi u2: not normalized, and wm */
+MF_FORCE_INLINE mf_vec3 mf__slope_dir_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
     mf_real cp, sp;
     mf__sincos_2pi(u2, &cp, &sp);
-    return mf__wm_from_slope(ax, ay, r2, cp, sp);
+    return mf__slope_dir(ax, ay, r2, cp, sp);
+}
+MF_FORCE_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
+{
+    return mf_normalize(mf__slope_dir_u(ax, ay, r2, u2));
 }
 
 /* Stretch w into the unit-roughness configuration; returns cos and sin of its
@@ -1321,10 +1330,14 @@ MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_ve
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
-MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    return mf__wm_from_slope_u(d->ax, d->ay, -MF_LOG1P(-t), u2);
+    return mf__slope_dir_u(d->ax, d->ay, -MF_LOG1P(-t), u2);
+}
+MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    return mf_normalize(mf__beckmann_sample_D_dir(d, u1, u2));
 }
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
@@ -1450,10 +1463,16 @@ MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
-MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+/* the NDF sample not normalized (mf_sample_D normalizes a transformed one
+ * once, after M^-T), and normalized */
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
-    return mf__wm_from_slope_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+    return mf__slope_dir_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+}
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    return mf_normalize(mf__ggx_sample_D_dir(d, u1, u2));
 }
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
@@ -2014,9 +2033,13 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
-    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
-              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
-    if (!d->transformed) return m;
+    if (!d->transformed)
+        return d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
+                 : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
+    /* M^-T is linear and keeps z: GGX and Beckmann samples are normalized
+     * once, after it */
+    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D_dir(d, u1, u2)
+              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D_dir(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
 

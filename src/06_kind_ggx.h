@@ -121,10 +121,16 @@ MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
-MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+/* the NDF sample not normalized (mf_sample_D normalizes a transformed one
+ * once, after M^-T), and normalized */
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
-    return mf__wm_from_slope_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+    return mf__slope_dir_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+}
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    return mf_normalize(mf__ggx_sample_D_dir(d, u1, u2));
 }
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {

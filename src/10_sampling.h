@@ -26,9 +26,13 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
-    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
-              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
-    if (!d->transformed) return m;
+    if (!d->transformed)
+        return d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
+                 : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
+    /* M^-T is linear and keeps z: GGX and Beckmann samples are normalized
+     * once, after it */
+    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D_dir(d, u1, u2)
+              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D_dir(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
     return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
 }
 
