@@ -131,12 +131,8 @@ MF_FORCE_INLINE mf_vec3 mf__slope_dir(mf_real ax, mf_real ay, mf_real r2, mf_rea
     r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
     return mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0));
 }
-MF_FORCE_INLINE mf_vec3 mf__wm_from_slope(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
-{
-    return mf_normalize(mf__slope_dir(ax, ay, r2, cp, sp));
-}
 
-/* the same at the azimuth 2 pi u2: not normalized, and wm */
+/* the same at the azimuth 2 pi u2, and wm (normalized) */
 MF_FORCE_INLINE mf_vec3 mf__slope_dir_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
     mf_real cp, sp;

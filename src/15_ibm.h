@@ -1436,19 +1436,6 @@ MF_INLINE int mf__ibm_window_row(int res, int r, int cx, int cy, int y, int *x0,
     return e >= a;
 }
 
-/* 1 if every bin of the window around (cx, cy) is empty: a row's bins are
- * consecutive, so its blocks are empty when its first bin starts where its
- * last ends (two index reads a row) */
-MF_INLINE int mf__ibm_window_empty(const mf_ibm *ibm, int cx, int cy)
-{
-    int r = ibm->radius, b = ibm->res, x0, x1, y;
-    for (y = -r; y <= r; ++y)
-        if (mf__ibm_window_row(b, r, cx, cy, y, &x0, &x1) &&
-            mf__ibm_off(ibm, (cx + x0) + b * (cy + y)) != mf__ibm_off(ibm, (cx + x1 + 1) + b * (cy + y)))
-            return 0;
-    return 1;
-}
-
 /* The non-empty bins of the window around bin (cx, cy) within the radius,
  * dx^2 + dy^2 <= r(r+1), in scan order: bin j[i] at (dx[i], dy[i]) and
  * mf__ibm_bin_near's verdict near[i] (1: none of its texels near the
@@ -1530,6 +1517,17 @@ MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *b
     return 1;
 }
 
+/* The bins of the window around (cx, cy) that may hold texels of footprint
+ * f (mf__ibm_window's verdict 2) in j, at (dx, dy); how many, 0 also when
+ * none of their texels can meet it (mf__ibm_far). */
+MF_INLINE int mf__ibm_near_bins(const mf_ibm *ibm, const mf_footprint *f, int cx, int cy, int *j, int *dx, int *dy)
+{
+    int verdict[MF_IBM_MAX_WINDOW], n = 0, i, nw = mf__ibm_window(ibm, f, cx, cy, j, dx, dy, verdict);
+    for (i = 0; i < nw; ++i)
+        if (verdict[i] == 2) { j[n] = j[i]; dx[n] = dx[i]; dy[n] = dy[i]; ++n; }
+    return n == 0 || mf__ibm_far(ibm, f, j, n) ? 0 : n;
+}
+
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f)
 {
     mf__ibm_fp p;
@@ -1599,29 +1597,25 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_fp p;
     mf_real gx = MF_R(-1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
     mf_vec3 h;
-    int r = ibm->radius, b = ibm->res, cx, cy, i;
+    int r = ibm->radius, b = ibm->res, cx, cy, i, small, nb = 0;
+    int near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW];
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
-    /* a neighbourhood without texels: 0 before any footprint work (but for
-     * footprints of at most 16 texels, whose few bin reads cost less) */
-    if (!(f && (mf_real)ibm->width * (mf_real)ibm->height * (MF_FABS(f->ax) + MF_FABS(f->bx)) * (MF_FABS(f->ay) + MF_FABS(f->by)) <= MF_R(16.0)) &&
-        mf__ibm_window_empty(ibm, cx, cy))
-        return MF_R(0.0);
+    /* the bins that may hold texels of the footprint, found before any
+     * footprint work (none: 0) - but for footprints of at most 16 texels,
+     * which read their texels' bins for less (mf__ibm_direct_any) */
+    small = f && (mf_real)ibm->width * (mf_real)ibm->height * (MF_FABS(f->ax) + MF_FABS(f->bx)) * (MF_FABS(f->ay) + MF_FABS(f->by)) <= MF_R(16.0);
+    if (!small && (nb = mf__ibm_near_bins(ibm, f, cx, cy, near, ndx, ndy)) == 0) return MF_R(0.0);
     mf__ibm_footprint(ibm, f, &p);
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
     /* a footprint of a few texels: the bins of its texels */
     if (p.mode == MF__IBM_EXACT && p.few) { if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0); }
-    else {   /* the non-empty bins of the neighbourhood (none, or none of their
-         * texels near the footprint: 0); for a footprint of many texels
-         * only those that face wo (and wi when only f is wanted), which
-         * spares their traversal (small ones are checked after their weights) */
-        int nb = 0, nw, near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW], verdict[MF_IBM_MAX_WINDOW];
-        nw = mf__ibm_window(ibm, f, cx, cy, near, ndx, ndy, verdict);
-        for (i = 0; i < nw; ++i)
-            if (verdict[i] == 2) { near[nb] = near[i]; ndx[nb] = ndx[i]; ndy[nb] = ndy[i]; ++nb; }
-        if (nb == 0 || mf__ibm_far(ibm, f, near, nb)) return MF_R(0.0);
+    else {   /* those bins; for a footprint of many texels only those that
+         * face wo (and wi when only f is wanted), which spares their
+         * traversal (small ones are checked after their weights) */
+        if (small && (nb = mf__ibm_near_bins(ibm, f, cx, cy, near, ndx, ndy)) == 0) return MF_R(0.0);
         for (i = 0; i < nb; ++i) {
             if (p.mode == MF__IBM_EXACT && !p.direct) {
                 mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
