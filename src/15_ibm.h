@@ -211,9 +211,9 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
  * the bin of the texel at the center, else 0; non-finite center: 0.
  * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
- * two index reads a window row) returns before any footprint work, and so does a bin whose stored kd-tree
- * top has no texel near the footprint, or a bin of a few texels none of
- * which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
+ * two index reads a window row) returns before any footprint work, and so
+ * does a bin whose stored kd-tree top has no texel near the footprint, or a
+ * bin of a few texels none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
  * texels visit the box (its bin-map rows prefetched), reading each texel's
  * bin before clipping it, unless the wanted bins hold fewer than 2 times
  * the box's texels (then their kd-trees are traversed); larger ones
