@@ -251,6 +251,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>   /* memcpy: the IBM's packed 8-byte reads */
 
 #ifdef MF_USE_DOUBLE
 typedef double mf_real;
@@ -3764,6 +3765,8 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  *            block's length n + 2^k - 1 (strictly increasing in n)
  *   bin map  N packed fields (row-major): the bin of each texel (Eq. 5.15),
  *            stored as ix | iy << s (s bits per axis)
+ * Each packed section ends with a spare word, the bin map with two (the
+ * reads of mf__ibm_get).
  * The kd-trees split the larger side of the power-of-two box holding the map
  * in the middle (x first on ties). The Morton code interleaves the bits in
  * exactly that order, so sorting a bin's positions by it makes every node a
@@ -5781,18 +5784,30 @@ MF_INLINE mf_real mf__fresnel_average(mf_real eta, mf_real k, int conductor)
 MF_COLD mf_real mf_fresnel_dielectric_average(mf_real eta) { return mf__fresnel_average(eta, MF_R(0.0), 0); }
 MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k) { return mf__fresnel_average(eta, k, 1); }
 #ifndef MF_NO_IBM
-/* one field of `w` bits (w <= 32) of a packed array; reads the word after
- * the field's first without a branch (every packed section of a map ends
- * with a spare word) */
+/* one field of `w` bits (w <= 32) of a packed array, without a branch: every
+ * packed section of a map ends with a spare word, the last with two, so the
+ * 8 bytes from the field's first byte lie in the array. On 64-bit
+ * little-endian hosts one unaligned 8-byte read (the fields' bits in order),
+ * else the field's first word and the next. */
+#if !defined(__CUDA_ARCH__) && ((defined(__x86_64__) || defined(_M_X64)) || \
+    (defined(__aarch64__) && !defined(__AARCH64EB__)) || defined(_M_ARM64))
+#define MF__IBM_GET64 1
+#endif
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
     size_t bit = i * (size_t)w;
+#ifdef MF__IBM_GET64
+    size_t v;   /* 64 bits here */
+    memcpy(&v, (const unsigned char *)base + (bit >> 3), sizeof v);
+    return (unsigned int)((v >> (bit & 7u)) & (((size_t)1 << w) - 1u));
+#else
     const unsigned int *p = base + (bit >> 5);
     unsigned int sh = (unsigned int)(bit & 31u);
     /* the two words shifted right by sh; (p[1] << 1) << (31 - sh) keeps both
      * shifts below 32 (no 64-bit type: C++98) */
     unsigned int v = (p[0] >> sh) | (((p[1] << 1) & 0xffffffffu) << (31u - sh));
     return w > 0 ? v & ((2u << (w - 1)) - 1u) & 0xffffffffu : 0u;
+#endif
 }
 /* bit b of field i alone (mf__ibm_get(base, i, w) >> b & 1): one word read,
  * fields being stored lowest bit first, one after another */
@@ -12172,7 +12187,7 @@ static size_t mf__ibm_layout(mf_ibm *ibm, int width, int height, int res, int ra
     ibm->mean_at = ibm->off_at + ((bins + 1u) * (size_t)ibm->off_bits + 31u) / 32u + 1u;
     ibm->pos_at = ibm->mean_at + bins;
     ibm->bin_at = ibm->pos_at + ((size_t)list_len * (size_t)ibm->list_bits + 31u) / 32u + 1u;
-    words = ibm->bin_at + (n * (size_t)ibm->bin_bits + 31u) / 32u + 1u;
+    words = ibm->bin_at + (n * (size_t)ibm->bin_bits + 31u) / 32u + 2u;   /* two spare words (mf__ibm_get) */
     if (words >= (size_t)0xffffffffu) return 0;
     return words;
 }

@@ -19,6 +19,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>   /* memcpy: the IBM's packed 8-byte reads */
 
 #ifdef MF_USE_DOUBLE
 typedef double mf_real;
