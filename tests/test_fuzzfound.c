@@ -4,6 +4,7 @@
  * through every builder (no leak, an error, for a failure at every call). */
 #include "mf_test.h"
 #include <stdlib.h>
+#include <string.h>
 
 static int fin(double x) { return mft_finite(x); }
 
@@ -28,7 +29,10 @@ void *mft_malloc(size_t n)
     /* fail_at -1: every call fails; never more than 1 GiB (the size tests) */
     if (mft_fail_at < 0 || (mft_fail_at && mft_alloc_calls == mft_fail_at) || n > ((size_t)1 << 30)) return NULL;
     p = malloc(n ? n : 1);
-    if (p) ++mft_live;
+    if (p) {
+        ++mft_live;
+        memset(p, 0xa5, n);   /* not zero: what the library reads before it writes shows */
+    }
     return p;
 }
 void mft_free(void *p)

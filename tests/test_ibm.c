@@ -324,6 +324,9 @@ static void test_structure(void)
     MFT_CHECK(mf_ibm_bin_of(&ibm, mf_vec3_make(0, 0, -1)) == -1 && mf_ibm_bin_of(&ibm, mf_vec3_make(0, 0, 0)) == -1,
               "bin_of: -1 below the horizon and for zero");
     MFT_CHECK(mf_ibm_memory_bytes(&ibm) == ibm.words * 4 && ibm.words > 48 * 40 / 4, "memory_bytes = words * 4");
+    /* the packed reads' two spare words end the array, zero (the checksum
+     * and saved files cover them) */
+    MFT_CHECK(ibm.data[ibm.words - 1] == 0u && ibm.data[ibm.words - 2] == 0u, "the array ends with two zero spare words");
     /* neighbourhood: 21 bins of a dense map (Sec. 5.4.2) */
     {
         mf_real *d = (mf_real *)malloc(sizeof(mf_real) * 3 * 64 * 64);
