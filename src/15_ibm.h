@@ -1040,6 +1040,19 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
 
 /* first index in [s, e) whose Morton code has bit `bit` set: a linear scan
  * of short ranges (predictable, one cache line), else binary search */
+/* the first of the positions base + [s, e) (sorted codes) whose code is at
+ * least c, relative to base; e when none */
+MF_INLINE unsigned int mf__ibm_lower(const unsigned int *pos, int w, unsigned int base, unsigned int s, unsigned int e, unsigned int c)
+{
+    unsigned int n = e - s;
+    while (n > 0u) {
+        unsigned int h = n >> 1;
+        if (mf__ibm_get(pos, (size_t)base + s + h, w) < c) { s += h + 1u; n -= h + 1u; }
+        else n = h;
+    }
+    return s;
+}
+
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
     const unsigned int *pos = ibm->data + ibm->pos_at;
@@ -1123,15 +1136,35 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     /* rounding bound of the edge functions of the piece's coordinates (at
      * most S, the texels its box spans, each), with room to spare */
     mf_real margin = MF_R(64.0) * (mf_real)MF_EPS * ((mf_real)(pc->bx1 - pc->ox + pc->by1 - pc->oy) + MF_R(2.0));
-    g[1].x0 = 0; g[1].y0 = 0; g[1].lx = ibm->kx; g[1].ly = ibm->ky; g[1].pre = 0u; g[1].act = 0u;
-    r[0] = rows[0]; r[1] = rows[1]; r[2] = rows[2];   /* the rows above: set as reached */
-    for (i = 0; i < nb; ++i) {
-        unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]);
-        r[1][i] = base[i];
-        r[0][i] = base[i] + nt;
-        cnt[i] = 0u;
-        frac[i] = MF_R(0.0);
-        if (nt > 0u) g[1].act |= 1u << i;
+    /* the traversal starts at the least node that holds the piece's box: the
+     * common prefix of its corners' codes (level l, index pre), each bin's
+     * range in it from its stored boundaries, searched below them */
+    {
+        unsigned int c0 = bx0 | by0, c1 = bx1 | by1, pre;
+        int b = mf__ibm_bitlen32(c0 ^ c1), l = depth - b;
+        pre = l > 0 ? c0 >> b : 0u;
+        mf__ibm_node_dims(ibm, l, &g[1].lx, &g[1].ly);
+        mf__ibm_unmorton_masked((pre << b) & xm, (pre << b) & ym, lom, kmin, &g[1].x0, &g[1].y0);   /* b <= depth <= 28 */
+        g[1].pre = pre; g[1].act = 0u;
+        r[0] = rows[0]; r[1] = rows[1]; r[2] = rows[2];   /* the rows above: set as reached */
+        for (i = 0; i < nb; ++i) {
+            unsigned int nt = mf__ibm_bin_info(ibm, bins[i], &base[i], &tab[i], &lev[i]), s = 0u, e = nt;
+            if (l > 0 && nt > 0u) {
+                int k = lev[i] < l ? lev[i] : l;
+                unsigned int q = pre >> (l - k);
+                s = mf__ibm_bound(pos, ibm->list_bits, tab[i], lev[i], nt, q << (lev[i] - k));
+                e = mf__ibm_bound(pos, ibm->list_bits, tab[i], lev[i], nt, (q + 1u) << (lev[i] - k));
+                if (k < l) {   /* below the stored levels: the codes of the node */
+                    s = mf__ibm_lower(pos, ibm->list_bits, base[i], s, e, pre << b);
+                    e = mf__ibm_lower(pos, ibm->list_bits, base[i], s, e, (pre + 1u) << b);
+                }
+            }
+            r[1][i] = base[i] + s;
+            r[0][i] = base[i] + e;
+            cnt[i] = 0u;
+            frac[i] = MF_R(0.0);
+            if (e > s) g[1].act |= 1u << i;
+        }
     }
     /* a node visits only the bins with texels in it (its act bits): the
      * rows of the others are neither read nor written */
