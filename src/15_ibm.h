@@ -1038,8 +1038,6 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
     return collect ? s->n : 0;
 }
 
-/* first index in [s, e) whose Morton code has bit `bit` set: a linear scan
- * of short ranges (predictable, one cache line), else binary search */
 /* the first of the positions base + [s, e) (sorted codes) whose code is at
  * least c, relative to base; e when none */
 MF_INLINE unsigned int mf__ibm_lower(const unsigned int *pos, int w, unsigned int base, unsigned int s, unsigned int e, unsigned int c)
@@ -1053,6 +1051,8 @@ MF_INLINE unsigned int mf__ibm_lower(const unsigned int *pos, int w, unsigned in
     return s;
 }
 
+/* first index in [s, e) whose Morton code has bit `bit` set (the codes of a
+ * node's range share the bits above it): the two ends, then binary search */
 MF_INLINE unsigned int mf__ibm_split(const mf_ibm *ibm, unsigned int s, unsigned int e, int bit)
 {
     const unsigned int *pos = ibm->data + ibm->pos_at;
