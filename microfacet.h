@@ -1220,22 +1220,16 @@ MF_FORCE_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
     return r < MF_A2T2_MAX ? r : MF_A2T2_MAX;
 }
 
-/* wm from an unstretched slope direction (cos phi, sin phi) and squared unit
+/* The unstretched slope direction at the azimuth 2 pi u2 and squared unit
  * slope radius r2, stretched by (ax, ay), not normalized: (ax r cos, ay r
- * sin, 1), or (ax cos, ay sin, 0) where r2 overflows. */
-MF_FORCE_INLINE mf_vec3 mf__slope_dir(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
-{
-    if (!(r2 < MF_R(1e30))) return mf_vec3_make(ax * cp, ay * sp, MF_R(0.0));
-    r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
-    return mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0));
-}
-
-/* the same at the azimuth 2 pi u2, and wm (normalized) */
+ * sin, 1), or (ax cos, ay sin, 0) where r2 overflows; and wm (normalized). */
 MF_FORCE_INLINE mf_vec3 mf__slope_dir_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
     mf_real cp, sp;
     mf__sincos_2pi(u2, &cp, &sp);
-    return mf__slope_dir(ax, ay, r2, cp, sp);
+    if (!(r2 < MF_R(1e30))) return mf_vec3_make(ax * cp, ay * sp, MF_R(0.0));
+    r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
+    return mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0));
 }
 MF_FORCE_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
@@ -12286,10 +12280,11 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     mf__ibm_resolution(alpha, cut, resolution, &res, &radius);
     n = (size_t)width * (size_t)height;
     bins = (size_t)res * (size_t)res;
-    if (!mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n)) return MF_ERROR_INVALID_ARGUMENT;
+    words = mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n);
+    if (!words) return MF_ERROR_INVALID_ARGUMENT;
     ncodes = (size_t)1 << (L.kx + L.ky);
     kmin = L.kx < L.ky ? L.kx : L.ky;
-    bmw = (n * (size_t)L.bin_bits + 31u) / 32u + 2u;   /* with its two spare words: the array's end */
+    bmw = words - L.bin_at;   /* the bin map's words, its spare words too: the array's end (the lists' length does not change it) */
     /* every texel's bin j by its Morton code (16 bits when the bins allow);
      * codes outside the map hold `none` */
     none = bins < 0xffffu ? 0xffffu : 0xffffffffu;

@@ -122,22 +122,16 @@ MF_FORCE_INLINE mf_real mf__a2t2(mf_real ax, mf_real ay, mf_vec3 w)
     return r < MF_A2T2_MAX ? r : MF_A2T2_MAX;
 }
 
-/* wm from an unstretched slope direction (cos phi, sin phi) and squared unit
+/* The unstretched slope direction at the azimuth 2 pi u2 and squared unit
  * slope radius r2, stretched by (ax, ay), not normalized: (ax r cos, ay r
- * sin, 1), or (ax cos, ay sin, 0) where r2 overflows. */
-MF_FORCE_INLINE mf_vec3 mf__slope_dir(mf_real ax, mf_real ay, mf_real r2, mf_real cp, mf_real sp)
-{
-    if (!(r2 < MF_R(1e30))) return mf_vec3_make(ax * cp, ay * sp, MF_R(0.0));
-    r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
-    return mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0));
-}
-
-/* the same at the azimuth 2 pi u2, and wm (normalized) */
+ * sin, 1), or (ax cos, ay sin, 0) where r2 overflows; and wm (normalized). */
 MF_FORCE_INLINE mf_vec3 mf__slope_dir_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {
     mf_real cp, sp;
     mf__sincos_2pi(u2, &cp, &sp);
-    return mf__slope_dir(ax, ay, r2, cp, sp);
+    if (!(r2 < MF_R(1e30))) return mf_vec3_make(ax * cp, ay * sp, MF_R(0.0));
+    r2 = MF_SQRT(mf_max(r2, MF_R(0.0)));
+    return mf_vec3_make(ax * r2 * cp, ay * r2 * sp, MF_R(1.0));
 }
 MF_FORCE_INLINE mf_vec3 mf__wm_from_slope_u(mf_real ax, mf_real ay, mf_real r2, mf_real u2)
 {

@@ -1937,10 +1937,11 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     mf__ibm_resolution(alpha, cut, resolution, &res, &radius);
     n = (size_t)width * (size_t)height;
     bins = (size_t)res * (size_t)res;
-    if (!mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n)) return MF_ERROR_INVALID_ARGUMENT;
+    words = mf__ibm_layout(&L, width, height, res, radius, (unsigned int)n);
+    if (!words) return MF_ERROR_INVALID_ARGUMENT;
     ncodes = (size_t)1 << (L.kx + L.ky);
     kmin = L.kx < L.ky ? L.kx : L.ky;
-    bmw = (n * (size_t)L.bin_bits + 31u) / 32u + 2u;   /* with its two spare words: the array's end */
+    bmw = words - L.bin_at;   /* the bin map's words, its spare words too: the array's end (the lists' length does not change it) */
     /* every texel's bin j by its Morton code (16 bits when the bins allow);
      * codes outside the map hold `none` */
     none = bins < 0xffffu ? 0xffffu : 0xffffffffu;
