@@ -1322,10 +1322,10 @@ MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_ve
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
+/* u1, u2 in [0, 1] (mf_sample_D clamps them) */
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    return mf__slope_dir_u(d->ax, d->ay, -MF_LOG1P(-t), u2);
+    return mf__slope_dir_u(d->ax, d->ay, -MF_LOG1P(-u1), u2);
 }
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
@@ -1456,11 +1456,12 @@ MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
 /* the NDF sample not normalized (mf_sample_D normalizes a transformed one
- * once, after M^-T), and normalized */
+ * once, after M^-T), and normalized; u1, u2 in [0, 1] (mf_sample_D clamps
+ * them) */
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
-    return mf__slope_dir_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+    mf_real q = MF_R(1.0) - u1;
+    return mf__slope_dir_u(d->ax, d->ay, q > MF_R(0.0) ? u1 / q : MF_BIG, u2);
 }
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
@@ -2016,8 +2017,14 @@ MF_FORCE_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
  *             closed-form inverse CDF. */
 
-/* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
-MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return u >= MF_R(0.0) ? (u <= MF_R(1.0) ? u : MF_R(1.0)) : MF_R(0.0); }
+/* random numbers outside [0, 1] are clamped to it, NaN becomes 0: a max and
+ * a min (maxss / minss on x86, where the nested test compiled to a compare
+ * and blends at -march=native, 6% of Beckmann mf_sample_D) */
+MF_FORCE_INLINE mf_real mf__u01(mf_real u)
+{
+    u = u > MF_R(0.0) ? u : MF_R(0.0);
+    return u < MF_R(1.0) ? u : MF_R(1.0);
+}
 
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */

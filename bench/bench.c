@@ -688,7 +688,11 @@ static void bench_gtr_student(void)
 }
 
 struct bench_kind { const char *name; mf_ndf d; };
-static void bench_core(const struct bench_kind *ks, int ggx_only);
+/* the core sections, one bit each; "core:<name>" runs one of them alone
+ * (tools/bench_inline.sh runs the builds one section at a time, in turn) */
+static const char *const core_sections[] = { "ggx", "kinds", "transformed", "leadr", "ltc" };
+#define CORE_ALL 31
+static void bench_core(const struct bench_kind *ks, int sections);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
 static void bench_ltc_shapes(void);
@@ -865,7 +869,18 @@ int main(int argc, char **argv)
         bench_ibm();
         return 0;
     }
-    bench_core(ks, argc > 1 && !strcmp(argv[1], "ggx"));
+    if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
+        int sec = 0;
+        for (i = 0; i < 5; ++i)
+            if (!strcmp(argv[1] + 5, core_sections[i])) sec = 1 << i;
+        if (!sec) {
+            fprintf(stderr, "bench: unknown section %s (ggx, kinds, transformed, leadr, ltc)\n", argv[1] + 5);
+            return 2;
+        }
+        bench_core(ks, sec);
+        return g_sink == g_sink ? 0 : 1;
+    }
+    bench_core(ks, argc > 1 && !strcmp(argv[1], "ggx") ? 1 : CORE_ALL);
     if (argc > 1 && (!strcmp(argv[1], "core") || !strcmp(argv[1], "ggx"))) return g_sink == g_sink ? 0 : 1;
     bench_beckmann_vndf();
     bench_tabulated();
@@ -877,10 +892,10 @@ int main(int argc, char **argv)
 /* the analytic kinds, the generic API against plain code, transformed
  * against plain, LEADR and LTC: the hot paths (tools/bench_inline.sh runs
  * this part at -O2, -O3 -march=native and in a large translation unit) */
-static void bench_core(const struct bench_kind *ks, int ggx_only)
+static void bench_core(const struct bench_kind *ks, int sections)
 {
     int k;
-    {
+    if (sections & 1) {   /* ggx: the generic API against plain code, materials */
         const mf_ndf *g = &ks[1].d;
         double base, ours, inl, pd, od, pg, og;
         run_pair(b_heitz2018, b_vndf, g, &base, &ours);
@@ -929,8 +944,7 @@ static void bench_core(const struct bench_kind *ks, int ggx_only)
             mf_dielectric_ms_release(&g_dms);
         }
     }
-    if (ggx_only) return;   /* the GGX section only */
-    for (k = 0; k < 5; ++k) {
+    for (k = 0; k < 5 && (sections & 2); ++k) {   /* kinds */
         const mf_ndf *d = &ks[k].d;
         double vndf = run(b_vndf, d), base = run(b_heitz2018, &ks[1].d);
         printf("bench %s_D %.2f\n", ks[k].name, run(b_D, d));
@@ -942,9 +956,9 @@ static void bench_core(const struct bench_kind *ks, int ggx_only)
         printf("bench %s_brdf_pdf %.2f\n", ks[k].name, run(b_brdf_pdf, d));
         printf("bench %s_brdf_sample_and_weight %.2f\n", ks[k].name, run(b_brdf_sample, d));
     }
-    bench_gtr_student();
-    /* linearly transformed microsurfaces: transformed vs plain, in pairs */
-    for (k = 0; k < 5; ++k) {
+    if (sections & 2) bench_gtr_student();
+    /* transformed: linearly transformed microsurfaces against plain, in pairs */
+    for (k = 0; k < 5 && (sections & 4); ++k) {
         const mf_ndf *d = &ks[k].d;
         mf_ndf t = mf_transformed(*d, mf_mat2_make(MF_R(1.5), MF_R(0.3), MF_R(-0.2), MF_R(0.8)));
         mf_ndf id = mf_transformed(*d, mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0)));
@@ -969,9 +983,9 @@ static void bench_core(const struct bench_kind *ks, int ggx_only)
             printf("bench %s_transformed_%s %.2f ratio=%.3f identity_ratio=%.3f\n", ks[k].name, names[f], tt, tt / tp, ti / tp);
         }
     }
-    printf("bench fresnel_conductor %.2f\n", run(b_fresnel, &ks[0].d));
-    /* LEADR: point-light specular, 5x5 diffuse and environment grids, pyramid build */
-    {
+    if (sections & 4) printf("bench fresnel_conductor %.2f\n", run(b_fresnel, &ks[0].d));
+    /* leadr: point-light specular, 5x5 diffuse and environment grids, pyramid build */
+    if (sections & 8) {
         mf_leadr a = mf_leadr_with_roughness(mf_leadr_from_slope(MF_R(0.1), MF_R(-0.05)), MF_R(0.3), MF_R(0.2));
         mf_real sh[9] = { 1, 0.2f, 0.5f, 0.1f, 0, 0, 0.05f, 0, 0 };
         double t0, t1, s = 0.0, ts = 1e30, td = 1e30, te = 1e30, th = 1e30;
@@ -1007,5 +1021,5 @@ static void bench_core(const struct bench_kind *ks, int ggx_only)
         }
         g_sink += s;
     }
-    bench_ltc();   /* LTC lookup, polygons, fitting */
+    if (sections & 16) bench_ltc();   /* ltc: lookup, polygons, fitting */
 }

@@ -70,10 +70,10 @@ MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_ve
 /* The kind's entries of the generic dispatch (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
+/* u1, u2 in [0, 1] (mf_sample_D clamps them) */
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    return mf__slope_dir_u(d->ax, d->ay, -MF_LOG1P(-t), u2);
+    return mf__slope_dir_u(d->ax, d->ay, -MF_LOG1P(-u1), u2);
 }
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {

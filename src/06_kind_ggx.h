@@ -122,11 +122,12 @@ MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
 /* the NDF sample not normalized (mf_sample_D normalizes a transformed one
- * once, after M^-T), and normalized */
+ * once, after M^-T), and normalized; u1, u2 in [0, 1] (mf_sample_D clamps
+ * them) */
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t;
-    return mf__slope_dir_u(d->ax, d->ay, q > MF_R(0.0) ? t / q : MF_BIG, u2);
+    mf_real q = MF_R(1.0) - u1;
+    return mf__slope_dir_u(d->ax, d->ay, q > MF_R(0.0) ? u1 / q : MF_BIG, u2);
 }
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
