@@ -871,7 +871,7 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
         int sec = 0;
-        for (i = 0; i < 5; ++i)
+        for (i = 0; i < (int)(sizeof core_sections / sizeof *core_sections); ++i)
             if (!strcmp(argv[1] + 5, core_sections[i])) sec = 1 << i;
         if (!sec) {
             fprintf(stderr, "bench: unknown section %s (ggx, kinds, transformed, leadr, ltc)\n", argv[1] + 5);

@@ -18,8 +18,8 @@
  *             closed-form inverse CDF. */
 
 /* random numbers outside [0, 1] are clamped to it, NaN becomes 0: a max and
- * a min (maxss / minss on x86, where the nested test compiled to a compare
- * and blends at -march=native, 6% of Beckmann mf_sample_D) */
+ * a min (maxss / minss on x86; a nested test compiled to a compare and
+ * blends at -march=native) */
 MF_FORCE_INLINE mf_real mf__u01(mf_real u)
 {
     u = u > MF_R(0.0) ? u : MF_R(0.0);
