@@ -22,8 +22,14 @@ MF_FORCE_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 {
     return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-/* x clamped to [lo, hi]; NaN gives lo */
-MF_FORCE_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi) { return x >= lo ? (x <= hi ? x : hi) : lo; }
+/* x clamped to [lo, hi] (lo <= hi); NaN gives lo. A max, then a min: maxss
+ * and minss on x86, where a nested test compiles to a compare and blends at
+ * -march=native (4-7% of GGX mf_brdf and both visible-normal samplers there) */
+MF_FORCE_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi)
+{
+    x = x > lo ? x : lo;
+    return x < hi ? x : hi;
+}
 MF_FORCE_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
 MF_FORCE_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
 /* 1 if x is finite, read from its bits: -ffast-math (__FAST_MATH__) lets the

@@ -17,14 +17,8 @@
  *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
  *             closed-form inverse CDF. */
 
-/* random numbers outside [0, 1] are clamped to it, NaN becomes 0: a max and
- * a min (maxss / minss on x86; a nested test compiled to a compare and
- * blends at -march=native) */
-MF_FORCE_INLINE mf_real mf__u01(mf_real u)
-{
-    u = u > MF_R(0.0) ? u : MF_R(0.0);
-    return u < MF_R(1.0) ? u : MF_R(1.0);
-}
+/* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
+MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return mf_clamp(u, MF_R(0.0), MF_R(1.0)); }
 
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
