@@ -688,10 +688,12 @@ static void bench_gtr_student(void)
 }
 
 struct bench_kind { const char *name; mf_ndf d; };
-/* the core sections, one bit each; "core:<name>" runs one of them alone
- * (tools/bench_inline.sh runs the builds one section at a time, in turn) */
+/* the core sections, one bit each; "core:<name>" runs one of them alone,
+ * "sections" lists them (tools/bench_inline.sh runs the builds one section
+ * at a time, in turn) */
 static const char *const core_sections[] = { "ggx", "kinds", "transformed", "leadr", "ltc" };
-#define CORE_ALL 31
+#define CORE_SECTIONS ((int)(sizeof core_sections / sizeof *core_sections))
+#define CORE_ALL ((1 << CORE_SECTIONS) - 1)
 static void bench_core(const struct bench_kind *ks, int sections);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
@@ -825,6 +827,10 @@ int main(int argc, char **argv)
 {
     struct bench_kind ks[5];
     int i;
+    if (argc > 1 && !strcmp(argv[1], "sections")) {
+        for (i = 0; i < CORE_SECTIONS; ++i) printf("%s\n", core_sections[i]);
+        return 0;
+    }
     for (i = 0; i < N; ++i) {
         g_wo[i] = rnd_dir(MF_R(1.5));
         g_wi[i] = rnd_dir(MF_R(1.5));
@@ -871,10 +877,10 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
         int sec = 0;
-        for (i = 0; i < (int)(sizeof core_sections / sizeof *core_sections); ++i)
+        for (i = 0; i < CORE_SECTIONS; ++i)
             if (!strcmp(argv[1] + 5, core_sections[i])) sec = 1 << i;
         if (!sec) {
-            fprintf(stderr, "bench: unknown section %s (ggx, kinds, transformed, leadr, ltc)\n", argv[1] + 5);
+            fprintf(stderr, "bench: unknown section %s (bench sections lists them)\n", argv[1] + 5);
             return 2;
         }
         bench_core(ks, sec);

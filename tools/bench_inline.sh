@@ -2,7 +2,7 @@
 # bench_inline.sh - the hot paths at three builds: -O2 (the reference), -O3
 # -march=native, and -O2 in a large translation unit (bench/big_tu.h adds 48
 # functions calling the whole inline API). Runs the bench's core sections
-# (ggx, kinds, transformed, leadr, ltc) one at a time, each section in the
+# (`bench sections`: ggx, kinds, transformed, leadr, ltc) one at a time, each section in the
 # three builds in turn, the builds' order rotating from round to round; the
 # short sections (under 0.4 s) run 4 times a round. Prints per line the best
 # (least) ns of each build over all runs and the ratios of the bests, O3/O2
@@ -20,6 +20,7 @@ mkdir -p $B
 $CC -std=c99 -O2 $EXTRA -I. bench/bench.c -o $B/o2 -lm
 $CC -std=c99 -O3 -march=native $EXTRA -I. bench/bench.c -o $B/o3 -lm
 $CC -std=c99 -O2 -DMF_BENCH_BIG_TU $EXTRA -I. bench/bench.c -o $B/big -lm
+sections=$(./$B/o2 sections)   # the bench's own list
 r=1
 while [ $r -le "$ROUNDS" ]; do
   case $((r % 3)) in
@@ -27,7 +28,7 @@ while [ $r -le "$ROUNDS" ]; do
     2) builds="o3 big o2" ;;
     *) builds="big o2 o3" ;;
   esac
-  for s in ggx kinds transformed leadr ltc; do
+  for s in $sections; do
     n=4; [ $s = ltc ] && n=1
     for v in $builds; do
       i=1
