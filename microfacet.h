@@ -420,6 +420,14 @@ typedef float mf_real;
 #ifndef MFDEF
 #define MFDEF extern
 #endif
+/* MF__LIKELY(c): c is expected true; the compiler lays out its branch as
+ * the straight path (fewer taken jumps in loops over the generic front
+ * ends: they run faster when a second hardware thread shares the core). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MF__LIKELY(c) __builtin_expect(!!(c), 1)
+#else
+#define MF__LIKELY(c) (c)
+#endif
 /* MF__PREFETCH(p): a hint that memory at p is read soon; no-op where the
  * compiler has no builtin for it and in device code. */
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
@@ -1962,6 +1970,9 @@ MF_FORCE_INLINE mf_real mf_G2(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_vec3 w
 {
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     if (!(mf_dot(wo, wm) > MF_R(0.0)) || !(mf_dot(wi, wm) > MF_R(0.0))) return MF_R(0.0);
+    /* untransformed GGX as the straight path: with another hardware thread
+     * on the core, 1.38 instead of 1.55 times a plain G2 loop (bench) */
+    if (MF__LIKELY(d->type == MF_NDF_GGX && !d->transformed)) return mf__ggx_G2(d->ax, d->ay, wo, wi);
     return mf__G2_up(d, wo, wi);
 }
 

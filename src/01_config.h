@@ -187,6 +187,14 @@ typedef float mf_real;
 #ifndef MFDEF
 #define MFDEF extern
 #endif
+/* MF__LIKELY(c): c is expected true; the compiler lays out its branch as
+ * the straight path (fewer taken jumps in loops over the generic front
+ * ends: they run faster when a second hardware thread shares the core). */
+#if defined(__GNUC__) || defined(__clang__)
+#define MF__LIKELY(c) __builtin_expect(!!(c), 1)
+#else
+#define MF__LIKELY(c) (c)
+#endif
 /* MF__PREFETCH(p): a hint that memory at p is read soon; no-op where the
  * compiler has no builtin for it and in device code. */
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__CUDA_ARCH__)
