@@ -22,9 +22,10 @@ MF_FORCE_INLINE mf_vec3 mf_cross(mf_vec3 a, mf_vec3 b)
 {
     return mf_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
-/* x clamped to [lo, hi] (lo <= hi); NaN gives lo. A max, then a min: maxss
- * and minss on x86, where a nested test compiles to a compare and blends at
- * -march=native (4-7% of GGX mf_brdf and both visible-normal samplers there) */
+/* x clamped to [lo, hi] (lo <= hi); NaN gives lo. A max, then a min: on
+ * x86 a compare and branch and a minss (constant bounds), where a nested
+ * test compiles to a compare and blends at -march=native (4-7% of GGX
+ * mf_brdf and both visible-normal samplers there) */
 MF_FORCE_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi)
 {
     x = x > lo ? x : lo;
@@ -32,6 +33,10 @@ MF_FORCE_INLINE mf_real mf_clamp(mf_real x, mf_real lo, mf_real hi)
 }
 MF_FORCE_INLINE mf_real mf_max(mf_real a, mf_real b) { return a > b ? a : b; }
 MF_FORCE_INLINE mf_real mf_min(mf_real a, mf_real b) { return a < b ? a : b; }
+/* mf_max for an a that is never NaN (a NaN a would be returned; a -0 a stays
+ * -0 against b = +0): against a constant b gcc compiles this form to maxss,
+ * mf_max's to a compare and blend at -march=native */
+MF_FORCE_INLINE mf_real mf__max_num(mf_real a, mf_real b) { return a < b ? b : a; }
 /* 1 if x is finite, read from its bits: -ffast-math (__FAST_MATH__) lets the
  * compiler assume that no value is NaN or Inf and fold x == x, x - x == 0 or
  * isnan(x) to true; the validation of data that may index memory uses this. */

@@ -35,12 +35,13 @@ MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real
     mf_real c2 = c * c, s2 = MF_R(1.0) - c2;
     mf_real e2 = eta * eta, k2 = k * k;
     mf_real t0 = e2 - k2 - s2;
-    mf_real a2b2 = MF_SQRT(mf_max(t0 * t0 + MF_R(4.0) * e2 * k2, MF_R(0.0)));
-    mf_real a = MF_SQRT(mf_max(MF_R(0.5) * (a2b2 + t0), MF_R(0.0)));
+    /* every value below is finite (inputs checked and capped): mf__max_num */
+    mf_real a2b2 = MF_SQRT(mf__max_num(t0 * t0 + MF_R(4.0) * e2 * k2, MF_R(0.0)));
+    mf_real a = MF_SQRT(mf__max_num(MF_R(0.5) * (a2b2 + t0), MF_R(0.0)));
     mf_real t1 = a2b2 + c2, t2 = MF_R(2.0) * a * c;
-    mf_real rs = (t1 - t2) / mf_max(t1 + t2, MF_R(1e-30));
+    mf_real rs = (t1 - t2) / mf__max_num(t1 + t2, MF_R(1e-30));
     mf_real t3 = c2 * a2b2 + s2 * s2, t4 = t2 * s2;
-    mf_real rp = rs * (t3 - t4) / mf_max(t3 + t4, MF_R(1e-30));
+    mf_real rp = rs * (t3 - t4) / mf__max_num(t3 + t4, MF_R(1e-30));
     return mf_clamp(MF_R(0.5) * (rp + rs), MF_R(0.0), MF_R(1.0));
 }
 
