@@ -435,12 +435,15 @@ typedef float mf_real;
 #else
 #define MF__PREFETCH(p) ((void)(p))
 #endif
-/* MF__CLZ32(v): leading zero bits of a nonzero 32-bit unsigned, where the
- * compiler has an instruction for it (undefined here: a portable loop). */
+/* MF__CLZ32(v), MF__CTZ32(v): leading and trailing zero bits of a nonzero
+ * 32-bit unsigned, where the compiler has an instruction for them (undefined
+ * here: portable code). */
 #if defined(__CUDA_ARCH__)
 #define MF__CLZ32(v) __clz((int)(v))
+#define MF__CTZ32(v) (__ffs((int)(v)) - 1)
 #elif defined(__GNUC__) || defined(__clang__)
 #define MF__CLZ32(v) __builtin_clz(v)
+#define MF__CTZ32(v) __builtin_ctz(v)
 #endif
 /* MF_COLD: functions that device code may call but that host includers need
  * not compile (numerical samplers, tabulated and IBM queries, the generic
@@ -5879,8 +5882,22 @@ MF_INLINE void mf__ibm_unmorton(int kx, int ky, unsigned int c, int *x, int *y)
  * axis's own (mf__ibm_unmorton's result, without splitting the code) */
 MF_INLINE void mf__ibm_unmorton_masked(unsigned int cx, unsigned int cy, unsigned int lom, int kmin, int *x, int *y)
 {
+#ifdef MF__IBM_GET64
+    /* both compactions at once, x in the upper half of a 64-bit word (the
+     * leaf loop's texel decode) */
+#define MF__IBM_TWICE(m) (((size_t)(m) << 32) | (size_t)(m))   /* no long long literal: C++98 */
+    size_t t = ((size_t)((cx & lom) >> 1) << 32) | (size_t)(cy & lom);
+    t = (t | (t >> 1)) & MF__IBM_TWICE(0x33333333u);
+    t = (t | (t >> 2)) & MF__IBM_TWICE(0x0f0f0f0fu);
+    t = (t | (t >> 4)) & MF__IBM_TWICE(0x00ff00ffu);
+    t = (t | (t >> 8)) & MF__IBM_TWICE(0x0000ffffu);
+#undef MF__IBM_TWICE
+    *x = (int)((unsigned int)(t >> 32) | ((cx & ~lom) >> kmin));
+    *y = (int)((unsigned int)t | ((cy & ~lom) >> kmin));
+#else
     *x = (int)(mf__ibm_compact((cx & lom) >> 1) | ((cx & ~lom) >> kmin));
     *y = (int)(mf__ibm_compact(cy & lom) | ((cy & ~lom) >> kmin));
+#endif
 }
 
 /* start of bin j's block in the lists section */
@@ -6520,7 +6537,11 @@ typedef struct mf__ibm_frame {
 /* the lowest set bit's index of v != 0 */
 MF_INLINE int mf__ibm_low_bit(unsigned int v)
 {
+#ifdef MF__CTZ32
+    return MF__CTZ32(v);   /* one instruction: the node loop's bin iteration */
+#else
     return mf__ibm_bitlen32(v & (0u - v)) - 1;
+#endif
 }
 
 /* The edges of a piece that may cut box [x0,x1) x [y0,y1) (texels), listed
@@ -6651,6 +6672,11 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
             int sparse = nb > 1 && (1 << cur.lx) <= pc->bx1 - pc->bx0 && (1 << cur.ly) <= pc->by1 - pc->by0;
             int ek[12], ne = -1, box = 1;   /* the edges that may cut the node (leaves; -1: not yet known) */
             unsigned int cells = (unsigned int)(x1 - cur.x0) * (unsigned int)(y1 - cur.y0);
+            /* a bin's texels in the node make a leaf when they are at most
+             * `cap` and either at most MF__IBM_LEAF_MIN or at least `dense`
+             * (not sparse: at most 2^MF__IBM_SPARSE_BITS cells per texel) */
+            unsigned int cap = bit < 0 ? 0xffffffffu : (unsigned int)MF_IBM_LEAF;
+            unsigned int dense = !sparse || bit < MF__IBM_SPARSE_BITS ? 0u : 1u << (bit + 1 - MF__IBM_SPARSE_BITS);
             for (m1 = cur.act; m1; m1 &= m1 - 1u) {
                 unsigned int s, e;
                 i = mf__ibm_low_bit(m1);
@@ -6660,7 +6686,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
                     cs[i] = mm[i] = e;
                     continue;
                 }
-                if (bit < 0 || (e - s <= (unsigned int)MF_IBM_LEAF && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || !sparse || bit < MF__IBM_SPARSE_BITS || (e - s) << MF__IBM_SPARSE_BITS >= 1u << (bit + 1)))) {
+                if (e - s <= cap && (e - s <= (unsigned int)MF__IBM_LEAF_MIN || e - s >= dense)) {
                     if (ne < 0) {
                         ne = pc->rect ? 0 : mf__ibm_cut_edges(pc, cur.x0, cur.y0, x1, y1, margin, ek);
                         /* the node within the piece's box and off its inside

@@ -202,12 +202,15 @@ typedef float mf_real;
 #else
 #define MF__PREFETCH(p) ((void)(p))
 #endif
-/* MF__CLZ32(v): leading zero bits of a nonzero 32-bit unsigned, where the
- * compiler has an instruction for it (undefined here: a portable loop). */
+/* MF__CLZ32(v), MF__CTZ32(v): leading and trailing zero bits of a nonzero
+ * 32-bit unsigned, where the compiler has an instruction for them (undefined
+ * here: portable code). */
 #if defined(__CUDA_ARCH__)
 #define MF__CLZ32(v) __clz((int)(v))
+#define MF__CTZ32(v) (__ffs((int)(v)) - 1)
 #elif defined(__GNUC__) || defined(__clang__)
 #define MF__CLZ32(v) __builtin_clz(v)
+#define MF__CTZ32(v) __builtin_ctz(v)
 #endif
 /* MF_COLD: functions that device code may call but that host includers need
  * not compile (numerical samplers, tabulated and IBM queries, the generic
