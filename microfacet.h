@@ -1968,7 +1968,10 @@ MF_FORCE_INLINE mf_real mf__ggx_G2(mf_real ax, mf_real ay, mf_vec3 wo, mf_vec3 w
 /* 1 / (1 + Lambda(wo) + Lambda(wi)) for wo.z, wi.z > 0 (no facet checks) */
 MF_FORCE_INLINE mf_real mf__G2_up(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
-    if (d->type == MF_NDF_GGX) {
+    /* GGX as the straight path: with another hardware thread busy on the
+     * core, mf_G2 costs 1.24-1.38 instead of 1.36-1.70 times a plain G2
+     * loop without facing tests (bench ggx_G2_generic) */
+    if (MF__LIKELY(d->type == MF_NDF_GGX)) {
         /* M^-1 fixes z: the transformed directions stay above the horizon */
         if (d->transformed) { wo = mf_mat2_apply(d->Minv, wo); wi = mf_mat2_apply(d->Minv, wi); }
         return mf__ggx_G2(d->ax, d->ay, wo, wi);
@@ -1979,10 +1982,6 @@ MF_FORCE_INLINE mf_real mf_G2(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_vec3 w
 {
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     if (!(mf_dot(wo, wm) > MF_R(0.0)) || !(mf_dot(wi, wm) > MF_R(0.0))) return MF_R(0.0);
-    /* untransformed GGX as the straight path: with another hardware thread
-     * busy on the core, 1.31-1.38 instead of 1.48-1.54 times a plain G2
-     * loop without facing tests (bench ggx_G2_generic) */
-    if (MF__LIKELY(d->type == MF_NDF_GGX && !d->transformed)) return mf__ggx_G2(d->ax, d->ay, wo, wi);
     return mf__G2_up(d, wo, wi);
 }
 
