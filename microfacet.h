@@ -3883,11 +3883,11 @@ MF_INLINE int mf__ibm_iceil(mf_real x)
 
 MF_INLINE int mf__ibm_cell(mf_real v, int b)
 {
-    mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5));
+    mf_real f = (mf_real)b * (MF_R(0.5) * v + MF_R(0.5)), top = (mf_real)(b - 1);
     int c;
-    f = f > MF_R(0.0) ? f : MF_R(0.0);           /* also NaN; selects, no branch (the build's hot loop) */
-    c = f < (mf_real)b ? (int)f : b - 1;         /* truncation = floor for f >= 0 */
-    return c >= 0 && c < b ? c : 0;              /* in range even where -ffast-math let NaN through */
+    f = f > MF_R(0.0) ? f : MF_R(0.0);           /* also NaN; a max and a min, no branch (the build's hot loop) */
+    c = (int)(f < top ? f : top);                /* truncation = floor for f >= 0 */
+    return (unsigned int)c < (unsigned int)b ? c : 0;   /* in range even where -ffast-math let NaN through */
 }
 
 /* b*b: the number of bins (those outside the unit disk stay empty). */
@@ -12349,7 +12349,8 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     }
     if (none == 0xffffu) t16 = (unsigned short *)tmp;
     else t32 = (unsigned int *)tmp;
-    for (i = 0; i <= bins; ++i) cur[i] = 0u;   /* sums: set by the first texel of a bin */
+    for (i = 0; i <= bins; ++i) cur[i] = 0u;
+    for (i = 0; i < 2u * bins; ++i) sums[i] = 0.0;
     for (i = 0; i < bmw; ++i) bmap[i] = 0u;
     if (ncodes != n) {
         if (t16) for (i = 0; i < ncodes; ++i) t16[i] = 0xffffu;
@@ -12357,22 +12358,22 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     }
     /* pass 1, in 8 x 8 tiles: validate, bin (Eq. 5.15), count, per-bin sums,
      * the bin map (bins as ix | iy << s), the bins by Morton code. The
-     * tile's rows are binned first (contiguous normals, no branch: a bad
-     * normal only sets a flag, checked once per tile; a texel with its left
-     * neighbour's normal takes its results); then its texels in Morton order
-     * (the tile's 64 consecutive codes when both sides have 8 texels or
-     * more) add up in runs of one bin (flakes) in registers before they reach
-     * memory. */
+     * tile's rows are binned, counted and summed first (contiguous normals,
+     * no branch: a bad normal only sets a flag, checked once per tile; a
+     * texel with its left neighbour's normal takes its results, and such a
+     * run reaches its bin's count and sums at once); then the tile's bins
+     * go to the Morton-ordered table (its 64 consecutive codes when both
+     * sides have 8 texels or more). */
     for (i = 0; i < 64u; ++i) tile[i] = (unsigned char)(mf__ibm_compact((unsigned int)i >> 1) | (mf__ibm_compact((unsigned int)i) << 3));
     for (y = 0; y < height; y += 8)
         for (x = 0; x < width; x += 8) {
-            unsigned int rj = 0xffffffffu, rc = 0u, q, tj[64], bc[8], mb;
+            unsigned int q, tj[64], bc[8], mb;
             int w8 = width - x < 8 ? width - x : 8, h8 = height - y < 8 ? height - y : 8, r, c;
-            mf_real tx[64], ty[64];
-            double rx = 0.0, ry = 0.0;
             for (r = 0; r < h8; ++r) {
                 size_t k = (size_t)(y + r) * (size_t)width + (size_t)x;
                 const mf_real *nv = normals_xyz + 3u * k;
+                unsigned int rj = 0u, rc = 0u;   /* the run of one normal: its bin and length */
+                mf_real rx = MF_R(0.0), ry = MF_R(0.0);
                 for (c = 0; c < w8; ++c, nv += 3) {
                     mf_real nx = nv[0], ny = nv[1], nz = nv[2], l2, il;
                     unsigned int ix, iy;
@@ -12380,11 +12381,15 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                         mf__ibm_same_bits(nz, nv[-1])) {
                         /* the left neighbour's normal, bit for bit (flakes, flat
                          * regions): its results (and its validity) */
-                        tj[8 * r + c] = tj[8 * r + c - 1];
-                        tx[8 * r + c] = tx[8 * r + c - 1]; ty[8 * r + c] = ty[8 * r + c - 1];
+                        tj[8 * r + c] = rj;
                         bc[c] = bc[c - 1];
+                        ++rc;
                         continue;
                     }
+                    /* the previous run into its bin (none at c = 0: adds 0) */
+                    cur[rj] += rc;
+                    sums[2u * rj] += (double)rx * rc;
+                    sums[2u * rj + 1u] += (double)ry * rc;
                     /* l2 is finite iff the three are and it does not overflow */
                     l2 = nx * nx + ny * ny + nz * nz;
                     bad |= (unsigned int)(!mf__finite_bits(l2)) | (unsigned int)(!(nz > MF_R(0.0))) |
@@ -12395,10 +12400,13 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                     il *= MF_R(1.5) - MF_R(0.5) * l2 * il * il;
                     nx *= il; ny *= il;
                     ix = (unsigned int)mf__ibm_cell(nx, res); iy = (unsigned int)mf__ibm_cell(ny, res);
-                    tj[8 * r + c] = ix + (unsigned int)res * iy;
-                    tx[8 * r + c] = nx; ty[8 * r + c] = ny;
+                    rj = tj[8 * r + c] = ix + (unsigned int)res * iy;
+                    rc = 1u; rx = nx; ry = ny;
                     bc[c] = ix | (iy << L.axis_bits);
                 }
+                cur[rj] += rc;
+                sums[2u * rj] += (double)rx * rc;
+                sums[2u * rj + 1u] += (double)ry * rc;
                 {
                     mf__ibm_writer wr;
                     mf__ibm_writer_at(&wr, bmap, k, L.bin_bits);
@@ -12411,29 +12419,16 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
                 return MF_ERROR_INVALID_DATA;
             }
             mb = mf__ibm_morton(L.kx, L.ky, (unsigned int)x, (unsigned int)y);
-            for (q = 0; q < 64u; ++q) {
-                unsigned int t = tile[q], j, code;
-                if ((w8 < 8 || h8 < 8) && ((int)(t & 7u) >= w8 || (int)(t >> 3) >= h8)) continue;
-                code = kmin >= 3 ? mb + q : mf__ibm_morton(L.kx, L.ky, (unsigned int)x + (t & 7u), (unsigned int)y + (t >> 3));
-                t = (t & 7u) + 8u * (t >> 3);
-                j = tj[t];
-                if (t16) t16[code] = (unsigned short)j;
-                else t32[code] = j;
-                if (j != rj) {
-                    if (rc) {
-                        if (cur[rj]) { sums[2u * rj] += rx; sums[2u * rj + 1u] += ry; }
-                        else { sums[2u * rj] = rx; sums[2u * rj + 1u] = ry; }
-                        cur[rj] += rc;
-                    }
-                    rj = j; rc = 0u; rx = ry = 0.0;
+            if (w8 == 8 && h8 == 8 && kmin >= 3 && t16)   /* the tile's 64 consecutive codes */
+                for (q = 0; q < 64u; ++q) t16[mb + q] = (unsigned short)tj[tile[q]];
+            else
+                for (q = 0; q < 64u; ++q) {
+                    unsigned int t = tile[q], code;   /* t = column + 8 row */
+                    if ((int)(t & 7u) >= w8 || (int)(t >> 3) >= h8) continue;
+                    code = kmin >= 3 ? mb + q : mf__ibm_morton(L.kx, L.ky, (unsigned int)x + (t & 7u), (unsigned int)y + (t >> 3));
+                    if (t16) t16[code] = (unsigned short)tj[t];
+                    else t32[code] = tj[t];
                 }
-                ++rc; rx += (double)tx[t]; ry += (double)ty[t];
-            }
-            if (rc) {
-                if (cur[rj]) { sums[2u * rj] += rx; sums[2u * rj + 1u] += ry; }
-                else { sums[2u * rj] = rx; sums[2u * rj + 1u] = ry; }
-                cur[rj] += rc;
-            }
         }
     /* block sizes: n, or n + 2^k - 1 with the top k levels of the kd-tree */
     for (i = 0; i < bins; ++i) start += mf__ibm_block_len(&L, cur[i]);
@@ -12472,81 +12467,54 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
     }
     mf__ibm_put(data + L.off_at, bins, L.off_bits, start);
     MF_FREE(sums);
-    /* per bin, the write state of pass 2 (3 words, in place of the sums):
-     * the cursor of its positions, their start, and for a bin with a
-     * kd-tree top (k levels) k << 26 | the next level-k node to bound
-     * (0xffffffff: no tree) */
-    st = (unsigned int *)MF_MALLOC(3u * bins * sizeof(unsigned int) + sizeof(unsigned int));
+    /* per bin, the write state of pass 2 (4 words, in place of the sums):
+     * st[4j] the cursor of its positions, st[4j + 1] the Morton code of the
+     * next inner level-k node boundary of its kd-tree top (0xffffffff: none
+     * left, or no tree), st[4j + 2] its first position, st[4j + 3] k << 26 |
+     * that node */
+    st = (unsigned int *)MF_MALLOC(4u * bins * sizeof(unsigned int) + sizeof(unsigned int));
     if (!st) {
         MF_FREE(tmp); MF_FREE(cur); MF_FREE(data);
         return MF_ERROR_OUT_OF_MEMORY;
     }
     start = 0u;
     for (i = 0; i < bins; ++i) {
-        unsigned int c = cur[i];
-        unsigned int len = mf__ibm_block_len(&L, c);
-        st[3u * i] = st[3u * i + 1u] = start + (len - c);   /* after the tree's inner boundaries */
-        st[3u * i + 2u] = len == c ? 0xffffffffu : (unsigned int)mf__ibm_tree_levels(&L, c) << 26 | 1u;   /* node 0 starts at 0: not stored */
+        unsigned int c = cur[i], len = mf__ibm_block_len(&L, c), *b = st + 4u * i;
+        int k = len == c ? 0 : mf__ibm_tree_levels(&L, c);
+        b[0] = b[2] = start + (len - c);   /* after the tree's inner boundaries */
+        b[1] = len == c ? 0xffffffffu : 1u << (L.kx + L.ky - k);   /* node 0 starts at 0: not stored */
+        b[3] = (unsigned int)k << 26 | 1u;
         start += len;
     }
     MF_FREE(cur);
     /* pass 2, in Morton order: the inverse bin map (Eq. 5.17) - positions
      * grouped by bin, each group sorted because the codes come in order -
      * and the forest (Sec. 5.4.4): a bin's inner level-k node boundary is
-     * written when its first position at or past the node arrives. Runs of one bin
-     * keep their state in registers, and their positions gather in a word
-     * that reaches memory when full (no read-modify-write chain per texel). */
-    {
-        unsigned int rj = 0xffffffffu, c = 0u, base = 0u, node = 0u, lim = 0xffffffffu, tab = 0u;
-        int shift = 0, tk = -1;
-        mf__ibm_writer wr;
-        mf__ibm_writer_at(&wr, list, 0u, L.list_bits);
-        for (i = 0; i < ncodes; ++i) {
-            unsigned int j = t16 ? (unsigned int)t16[i] : t32[i], code = (unsigned int)i;
-            if (j == none) continue;
-            if (j != rj) {   /* a new run: save the old bin's state, load the new one's */
-                if (rj != 0xffffffffu) {
-                    mf__ibm_writer_flush(&wr);
-                    st[3u * rj] = c;
-                    if (tk >= 0) st[3u * rj + 2u] = ((unsigned int)tk << 26) | node;
-                }
-                rj = j;
-                c = st[3u * rj];
-                mf__ibm_writer_at(&wr, list, c, L.list_bits);
-                node = st[3u * rj + 2u];
-                if (node == 0xffffffffu) { tk = -1; lim = 0xffffffffu; }
-                else {
-                    tk = (int)(node >> 26);
-                    node &= 0x03ffffffu;
-                    base = st[3u * rj + 1u];
-                    tab = base - (1u << tk);   /* inner boundary `node` at tab + node */
-                    shift = L.kx + L.ky - tk;
-                    lim = node << shift;
-                }
-            }
-            while (code >= lim) {   /* the level-k nodes up to this one start at this position */
-                mf__ibm_put(list, tab + node, L.list_bits, c - base);
+     * written when its first position at or past the node arrives. One
+     * cursor per texel, no per-run state: runs of one bin are short on
+     * smooth and noisy maps, where switching state cost more. */
+    for (i = 0; i < ncodes; ++i) {
+        unsigned int j = t16 ? (unsigned int)t16[i] : t32[i], code = (unsigned int)i, *b, c;
+        if (j == none) continue;
+        b = st + 4u * j;
+        c = b[0]++;
+        if (code >= b[1]) {   /* the level-k nodes up to this one start at this position */
+            unsigned int node = b[3] & 0x03ffffffu, tk = b[3] >> 26, shift = (unsigned int)(L.kx + L.ky) - tk;
+            do {
+                mf__ibm_put(list, b[2] - (1u << tk) + node, L.list_bits, c - b[2]);
                 ++node;
-                lim = node << shift;
-            }
-            ++c;
-            mf__ibm_writer_push(&wr, code);
+            } while (code >= node << shift);
+            b[1] = node < 1u << tk ? node << shift : 0xffffffffu;
+            b[3] = tk << 26 | node;
         }
-        if (rj != 0xffffffffu) {
-            mf__ibm_writer_flush(&wr);
-            st[3u * rj] = c;
-            if (tk >= 0) st[3u * rj + 2u] = ((unsigned int)tk << 26) | node;
-        }
+        mf__ibm_put(list, c, L.list_bits, code);
     }
     MF_FREE(tmp);
     /* the remaining inner node boundaries of each tree: the bin's count */
     for (i = 0; i < bins; ++i) {
-        unsigned int s = st[3u * i + 2u], node, kn, cnt;
-        if (s == 0xffffffffu) continue;
-        kn = 1u << (s >> 26);
-        cnt = st[3u * i] - st[3u * i + 1u];
-        for (node = s & 0x03ffffffu; node < kn; ++node)
-            mf__ibm_put(list, st[3u * i + 1u] - kn + node, L.list_bits, cnt);
+        unsigned int *b = st + 4u * i, node, kn = 1u << (b[3] >> 26);
+        for (node = b[3] & 0x03ffffffu; node < kn; ++node)
+            mf__ibm_put(list, b[2] - kn + node, L.list_bits, b[0] - b[2]);
     }
     MF_FREE(st);
     data[0] = MF_IBM_MAGIC;
