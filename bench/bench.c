@@ -172,11 +172,11 @@ static void bench_tabulated(void)
 /* ---- Inverse Bin Map ---- */
 /* A car-paint flake map (thesis Sec. 5.5.4, Fig. 5.10): Voronoi flakes around
  * a jittered grid of `cell` texels, tiling, each flake's normal drawn from
- * GTR (alpha 0.002, gamma 1.5), normals below 0.2 clamped up. */
-static mf_real *ibm_flake_map(int n, int cell)
+ * GTR (alpha `ga`, gamma 1.5), normals below 0.2 clamped up. */
+static mf_real *ibm_flake_map(int n, int cell, double ga)
 {
     int g = n / cell, x, y, i;
-    mf_ndf gtr = mf_gtr(MF_R(0.002), MF_R(1.5));
+    mf_ndf gtr = mf_gtr((mf_real)ga, MF_R(1.5));
     mf_real *m = (mf_real *)malloc(sizeof(mf_real) * 3 * (size_t)n * (size_t)n);
     float *sx = (float *)malloc(sizeof(float) * (size_t)(g * g)), *sy = (float *)malloc(sizeof(float) * (size_t)(g * g));
     mf_vec3 *fn = (mf_vec3 *)malloc(sizeof(mf_vec3) * (size_t)(g * g));
@@ -205,6 +205,53 @@ static mf_real *ibm_flake_map(int n, int cell)
         }
     free(sx); free(sy); free(fn);
     return m;
+}
+
+/* A smooth map: a tiling height field of six waves (wave vectors of -4..4
+ * periods per side, total amplitude 1), normals from its analytic gradient:
+ * nearly every texel has its own normal and bin runs are short. */
+static mf_real *ibm_smooth_map(int n)
+{
+    double kx[6], ky[6], ph[6], amp[6];
+    mf_real *m = (mf_real *)malloc(sizeof(mf_real) * 3 * (size_t)n * (size_t)n);
+    int x, y, i;
+    if (!m) return NULL;
+    for (i = 0; i < 6; ++i) {
+        kx[i] = (double)(int)(9.0 * rnd()) - 4.0;
+        ky[i] = (double)(int)(9.0 * rnd()) - 4.0;
+        if (kx[i] == 0.0 && ky[i] == 0.0) kx[i] = 1.0;
+        ph[i] = 6.283185307179586 * (double)rnd();
+        amp[i] = (0.5 + (double)rnd()) / 6.0;
+    }
+    for (y = 0; y < n; ++y)
+        for (x = 0; x < n; ++x) {
+            double gx = 0.0, gy = 0.0, l;
+            for (i = 0; i < 6; ++i) {
+                double c = cos(6.283185307179586 * (kx[i] * (x + 0.5) + ky[i] * (y + 0.5)) / n + ph[i]);
+                gx += amp[i] * kx[i] * c;
+                gy += amp[i] * ky[i] * c;
+            }
+            l = sqrt(gx * gx + gy * gy + 1.0);
+            m[3 * ((size_t)y * n + x)] = (mf_real)(-gx / l);
+            m[3 * ((size_t)y * n + x) + 1] = (mf_real)(-gy / l);
+            m[3 * ((size_t)y * n + x) + 2] = (mf_real)(1.0 / l);
+        }
+    return m;
+}
+
+/* the best of 3 builds at flake alpha `alpha`, in ns; the last build stays in *ibm */
+static double ibm_build_best(mf_ibm *ibm, const mf_real *nm, int n, double alpha)
+{
+    double best = 1e30, t0;
+    int it;
+    for (it = 0; it < 3; ++it) {
+        t0 = now_ns();
+        if (mf_ibm_build(ibm, nm, n, n, (mf_real)alpha) != MF_SUCCESS) return -1.0;
+        t0 = now_ns() - t0;
+        if (t0 < best) best = t0;
+        if (it < 2) mf_ibm_release(ibm);
+    }
+    return best;
 }
 
 /* |P ∩ texel [x, x+1] x [y, y+1]|, P a convex counterclockwise polygon */
@@ -280,11 +327,11 @@ static void bench_ibm(void)
 {
     const int n = 2048, nq = 256;
     const double alphas[4] = { 0.0025, 0.01, 0.04, 0.16 }, texels[4] = { 1.0, 1e2, 1e4, 1e6 };
-    mf_real *nm = ibm_flake_map(n, 6);
+    mf_real *nm = ibm_flake_map(n, 6, 0.002);
     mf_ndf gtr = mf_gtr(MF_R(0.002), MF_R(1.5));
     mf_footprint fq[nq];
     mf_vec3 wo[nq], wi[nq];
-    int a, k, q, it;
+    int a, k, q;
     if (!nm) return;
     for (q = 0; q < nq; ++q) {
         mf_vec3 m = mf_sample_D(&gtr, rnd(), rnd());
@@ -294,15 +341,9 @@ static void bench_ibm(void)
     }
     for (a = 0; a < 4; ++a) {
         mf_ibm ibm;
-        double t0, t1, best = 1e30;
+        double t0, t1, best = ibm_build_best(&ibm, nm, n, alphas[a]);
         char name[64];
-        for (it = 0; it < 3; ++it) {
-            t0 = now_ns();
-            if (mf_ibm_build(&ibm, nm, n, n, (mf_real)alphas[a]) != MF_SUCCESS) { free(nm); return; }
-            t1 = now_ns();
-            if (t1 - t0 < best) best = t1 - t0;
-            if (it < 2) mf_ibm_release(&ibm);
-        }
+        if (best < 0.0) { free(nm); return; }
         mf_ibm_set_shadowing(&ibm, &gtr);   /* G_x: the flakes' GTR (Sec. 5.5.4) */
         snprintf(name, sizeof name, "ibm_build_2048_a%g", alphas[a]);
         printf("bench %s %.0f ms=%.1f MB=%.1f bins=%d^2\n", name, best, best * 1e-6,
@@ -342,6 +383,21 @@ static void bench_ibm(void)
         mf_ibm_release(&ibm);
     }
     free(nm);
+    /* the build on two more maps at alpha 0.01: a smooth one (every texel
+     * its own normal) and finer, rougher flakes (Voronoi 4 texels apart, GTR
+     * alpha 0.05) */
+    for (a = 0; a < 2; ++a) {
+        mf_ibm ibm;
+        double best;
+        nm = a == 0 ? ibm_smooth_map(n) : ibm_flake_map(n, 4, 0.05);
+        if (!nm) return;
+        best = ibm_build_best(&ibm, nm, n, 0.01);
+        free(nm);
+        if (best < 0.0) return;
+        printf("bench ibm_build_2048_a0.01_%s %.0f ms=%.1f MB=%.1f bins=%d^2\n", a == 0 ? "smooth" : "flakes4", best,
+               best * 1e-6, (double)mf_ibm_memory_bytes(&ibm) / (1024.0 * 1024.0), ibm.res);
+        mf_ibm_release(&ibm);
+    }
 }
 
 /* ---- microsurface generation and the gonioreflectometer ---- */
