@@ -800,12 +800,10 @@ MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row
 
 /* The whole piece: its polygon (mf__ibm_piece_poly), the unit half-planes of
  * its edges and the texels wholly inside; 0 if it has no area. */
-MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
-                                 const mf_real *y, int n, mf__ibm_piece *pc)
+/* The unit half-planes of a piece's edges (after mf__ibm_piece_poly) */
+MF_INLINE void mf__ibm_piece_edges(mf__ibm_piece *pc)
 {
-    int i, m;
-    if (!mf__ibm_piece_poly(ibm, p, row, col, x, y, n, pc)) return 0;
-    m = pc->n;
+    int i, m = pc->n;
     for (i = 0; i < m; ++i) {
         int k = i + 1 == m ? 0 : i + 1;
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
@@ -815,6 +813,15 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
         pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
+}
+
+MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
+                                 const mf_real *y, int n, mf__ibm_piece *pc)
+{
+    int i, m;
+    if (!mf__ibm_piece_poly(ibm, p, row, col, x, y, n, pc)) return 0;
+    m = pc->n;
+    mf__ibm_piece_edges(pc);
     {   /* texels [ix0, ix1) x [iy0, iy1) wholly inside (area 1 without
          * clipping): the rectangle itself, or a square about the vertex
          * mean that every edge keeps, less a margin of 0.05 texel so
@@ -1330,6 +1337,59 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     for (i = 0; i < nb; ++i) acc[i] += (mf_real)cnt[i] + frac[i];
 }
 
+/* The weights of a set of bins that hold few texels in all, for a
+ * footprint inside one period (its only piece, A itself): each texel of the
+ * bins by its position, its area in A as the traversal's leaves take it
+ * (mf__ibm_texel_area), no traversal, no texel box and no bin-map reads.
+ * 0 where the path does not apply (the caller goes on). */
+#define MF__IBM_FEW_TEXELS 48u
+MF_INLINE int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
+{
+    mf__ibm_piece pc;
+    mf_real tot, frac;
+    unsigned int texels = 0u, n, base, tab, q, cnt, xm, ym, x0, x1, y0, y1, ix0 = 1u, ix1 = 0u, iy0 = 1u, iy1 = 0u;
+    int i, k, x, y;
+    /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
+     * rows cost fewer cache lines than the lists of several bins (the 21
+     * bins at 1 texel: twice the misses), so one bin only */
+    if (!p->inner || p->full > MF_R(0.0) || (p->direct && s->n > 1)) return 0;
+    for (i = 0; i < s->n; ++i) {
+        texels += (unsigned int)mf_ibm_bin_texels(ibm, s->bin[i]);
+        if (texels > MF__IBM_FEW_TEXELS) return 0;
+    }
+    /* a small footprint's weights are divided by its texels' areas as they
+     * add up (mf__ibm_weights), which takes every texel it covers: here only
+     * where the bin cannot hold them all */
+    if (p->few && (size_t)texels >= (size_t)ibm->width * (size_t)ibm->height) return 0;
+    for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
+    if (!mf__ibm_piece_make(ibm, p, 0, 0, p->x, p->y, 4, &pc)) return 1;
+    tot = mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));   /* as mf__ibm_weights takes |A| */
+    /* the piece's texel box in Morton code (x and y bits masked compare like x and y) */
+    xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u); ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
+    x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.bx0, 0u); x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.bx1 - 1u, 0u);
+    y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.by0); y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.by1 - 1u);
+    if (pc.ix1 > pc.ix0 && pc.iy1 > pc.iy0) {   /* the texels wholly inside, likewise */
+        ix0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.ix0, 0u); ix1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.ix1 - 1u, 0u);
+        iy0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.iy0); iy1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.iy1 - 1u);
+    }
+    for (i = 0; i < s->n; ++i) {
+        n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
+        cnt = 0u; frac = MF_R(0.0);
+        for (q = 0u; q < n; ++q) {
+            unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & xm, my = c & ym;
+            mf_real a;
+            if (mx < x0 || mx > x1 || my < y0 || my > y1) continue;
+            if (mx >= ix0 && mx <= ix1 && my >= iy0 && my <= iy1) { ++cnt; continue; }
+            mf__ibm_unmorton(ibm->kx, ibm->ky, c, &x, &y);
+            a = mf__ibm_texel_area(&pc, x, y);
+            if (a >= MF_R(1.0)) ++cnt;
+            else frac += a;
+        }
+        s->w[i] = tot > MF_R(0.0) ? mf_clamp(((mf_real)cnt + frac) / tot, MF_R(0.0), MF_R(1.0)) : MF_R(0.0);
+    }
+    return 1;
+}
+
 /* W_j for every bin of the set (Eq. 5.8): full periods count each texel of the
  * bin once, the pieces by direct sum or kd traversal, all divided by |A|. */
 MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
@@ -1347,6 +1407,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         for (i = 0; i < s->n; ++i) s->w[i] = (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]) * inv;
         return;
     }
+    if (mf__ibm_weights_few(ibm, p, s)) return;
     for (i = 0; i < s->n; ++i) s->w[i] = p->full > MF_R(0.0) ? p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]) : MF_R(0.0);
     if (direct && !p->few) {
         /* wanted bins with fewer than 2 times the box's texels: their kd
