@@ -435,6 +435,17 @@ typedef float mf_real;
 #else
 #define MF__PREFETCH(p) ((void)(p))
 #endif
+/* MF__NOINLINE: keeps a rarely taken path out of its caller's code (where
+ * inlining it cost the caller's hot loop: the IBM's few-texel path) */
+#if defined(__CUDACC__)
+#define MF__NOINLINE __noinline__
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define MF__NOINLINE __declspec(noinline)
+#else
+#define MF__NOINLINE
+#endif
 /* MF__CLZ32(v), MF__CTZ32(v): leading and trailing zero bits of a nonzero
  * 32-bit unsigned, where the compiler has an instruction for them (undefined
  * here: portable code). */
@@ -6785,7 +6796,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * (mf__ibm_texel_area), no traversal, no texel box and no bin-map reads.
  * 0 where the path does not apply (the caller goes on). */
 #define MF__IBM_FEW_TEXELS 48u
-MF_INLINE int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
+static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
     mf__ibm_piece pc;
     mf_real tot, frac;

@@ -202,6 +202,17 @@ typedef float mf_real;
 #else
 #define MF__PREFETCH(p) ((void)(p))
 #endif
+/* MF__NOINLINE: keeps a rarely taken path out of its caller's code (where
+ * inlining it cost the caller's hot loop: the IBM's few-texel path) */
+#if defined(__CUDACC__)
+#define MF__NOINLINE __noinline__
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define MF__NOINLINE __declspec(noinline)
+#else
+#define MF__NOINLINE
+#endif
 /* MF__CLZ32(v), MF__CTZ32(v): leading and trailing zero bits of a nonzero
  * 32-bit unsigned, where the compiler has an instruction for them (undefined
  * here: portable code). */

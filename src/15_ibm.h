@@ -1343,7 +1343,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * (mf__ibm_texel_area), no traversal, no texel box and no bin-map reads.
  * 0 where the path does not apply (the caller goes on). */
 #define MF__IBM_FEW_TEXELS 48u
-MF_INLINE int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
+static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
     mf__ibm_piece pc;
     mf_real tot, frac;
