@@ -6259,10 +6259,12 @@ MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row
 
 /* The whole piece: its polygon (mf__ibm_piece_poly), the unit half-planes of
  * its edges and the texels wholly inside; 0 if it has no area. */
-/* The unit half-planes of a piece's edges (after mf__ibm_piece_poly) */
-MF_INLINE void mf__ibm_piece_edges(mf__ibm_piece *pc)
+MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
+                                 const mf_real *y, int n, mf__ibm_piece *pc)
 {
-    int i, m = pc->n;
+    int i, m;
+    if (!mf__ibm_piece_poly(ibm, p, row, col, x, y, n, pc)) return 0;
+    m = pc->n;
     for (i = 0; i < m; ++i) {
         int k = i + 1 == m ? 0 : i + 1;
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
@@ -6272,15 +6274,6 @@ MF_INLINE void mf__ibm_piece_edges(mf__ibm_piece *pc)
         pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
         pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
-}
-
-MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
-                                 const mf_real *y, int n, mf__ibm_piece *pc)
-{
-    int i, m;
-    if (!mf__ibm_piece_poly(ibm, p, row, col, x, y, n, pc)) return 0;
-    m = pc->n;
-    mf__ibm_piece_edges(pc);
     {   /* texels [ix0, ix1) x [iy0, iy1) wholly inside (area 1 without
          * clipping): the rectangle itself, or a square about the vertex
          * mean that every edge keeps, less a margin of 0.05 texel so
