@@ -1098,6 +1098,23 @@ typedef struct mf__ibm_frame {
     unsigned int act;               /* bit i: bin i has texels in the node */
 } mf__ibm_frame;
 
+/* Texels [x0, x1] x [y0, y1] (inclusive; none when x1 < x0 or y1 < y0) as
+ * bounds on Morton codes: a code's x bits (masked by xm) and y bits (ym)
+ * compare like x and y themselves, so that a texel's code is tested against
+ * the box without decoding it. */
+typedef struct mf__ibm_cbox { unsigned int xm, ym, x0, x1, y0, y1; } mf__ibm_cbox;
+MF_INLINE mf__ibm_cbox mf__ibm_code_box(const mf_ibm *ibm, int x0, int y0, int x1, int y1)
+{
+    mf__ibm_cbox b;
+    b.xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u);
+    b.ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
+    b.x0 = b.y0 = 1u; b.x1 = b.y1 = 0u;
+    if (x1 < x0 || y1 < y0) return b;
+    b.x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)x0, 0u); b.x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)x1, 0u);
+    b.y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)y0); b.y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)y1);
+    return b;
+}
+
 /* the lowest set bit's index of v != 0 */
 MF_INLINE int mf__ibm_low_bit(unsigned int v)
 {
@@ -1145,18 +1162,13 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     mf_real frac[MF_IBM_BATCH];
     const unsigned int *pos = ibm->data + ibm->pos_at;
     int t = 1, top = 2, i, depth = ibm->kx + ibm->ky, jump = 1;
-    /* the piece's texel box in Morton code: the x and y bits of a code,
-     * masked, compare like x and y themselves */
-    unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
-    unsigned int bx0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->bx0, 0u), bx1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->bx1 - 1u, 0u);
-    unsigned int by0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->by0), by1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->by1 - 1u);
-    unsigned int ix0 = 1u, ix1 = 0u, iy0 = 1u, iy1 = 0u;   /* the texels wholly inside, likewise (empty: none) */
+    /* the piece's texel box and the texels wholly inside in Morton code */
+    mf__ibm_cbox bb = mf__ibm_code_box(ibm, pc->bx0, pc->by0, pc->bx1 - 1, pc->by1 - 1);
+    mf__ibm_cbox ib = mf__ibm_code_box(ibm, pc->ix0, pc->iy0, pc->ix1 - 1, pc->iy1 - 1);
+    unsigned int xm = bb.xm, ym = bb.ym, bx0 = bb.x0, bx1 = bb.x1, by0 = bb.y0, by1 = bb.y1;
+    unsigned int ix0 = ib.x0, ix1 = ib.x1, iy0 = ib.y0, iy1 = ib.y1;
     int kmin = ibm->kx < ibm->ky ? ibm->kx : ibm->ky;
     unsigned int lom = kmin >= 16 ? 0xffffffffu : (1u << (2 * kmin)) - 1u;   /* the interleaved bits */
-    if (pc->ix1 > pc->ix0 && pc->iy1 > pc->iy0) {
-        ix0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->ix0, 0u); ix1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc->ix1 - 1u, 0u);
-        iy0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->iy0); iy1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc->iy1 - 1u);
-    }
     /* rounding bound of the edge functions of the piece's coordinates (at
      * most S, the texels its box spans, each), with room to spare */
     mf_real margin = MF_R(64.0) * (mf_real)MF_EPS * ((mf_real)(pc->bx1 - pc->ox + pc->by1 - pc->oy) + MF_R(2.0));
@@ -1346,12 +1358,13 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
 {
     mf__ibm_piece pc;
     mf_real tot, frac;
-    unsigned int texels = 0u, n, base, tab, q, cnt, xm, ym, x0, x1, y0, y1, ix0 = 1u, ix1 = 0u, iy0 = 1u, iy1 = 0u;
+    unsigned int texels = 0u, n, base, tab, q, cnt;
+    mf__ibm_cbox bb, ib;
     int i, k, x, y;
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
      * rows cost fewer cache lines than the lists of several bins (the 21
      * bins at 1 texel: twice the misses), so one bin only */
-    if (!p->inner || p->full > MF_R(0.0) || (p->direct && s->n > 1)) return 0;
+    if (!p->inner || (p->direct && s->n > 1)) return 0;   /* inner: no full period either */
     for (i = 0; i < s->n; ++i) {
         texels += (unsigned int)mf_ibm_bin_texels(ibm, s->bin[i]);
         if (texels > MF__IBM_FEW_TEXELS) return 0;
@@ -1363,28 +1376,22 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
     if (!mf__ibm_piece_make(ibm, p, 0, 0, p->x, p->y, 4, &pc)) return 1;
     tot = mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));   /* as mf__ibm_weights takes |A| */
-    /* the piece's texel box in Morton code (x and y bits masked compare like x and y) */
-    xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u); ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
-    x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.bx0, 0u); x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.bx1 - 1u, 0u);
-    y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.by0); y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.by1 - 1u);
-    if (pc.ix1 > pc.ix0 && pc.iy1 > pc.iy0) {   /* the texels wholly inside, likewise */
-        ix0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.ix0, 0u); ix1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)pc.ix1 - 1u, 0u);
-        iy0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.iy0); iy1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)pc.iy1 - 1u);
-    }
+    bb = mf__ibm_code_box(ibm, pc.bx0, pc.by0, pc.bx1 - 1, pc.by1 - 1);
+    ib = mf__ibm_code_box(ibm, pc.ix0, pc.iy0, pc.ix1 - 1, pc.iy1 - 1);
     for (i = 0; i < s->n; ++i) {
         n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         cnt = 0u; frac = MF_R(0.0);
         for (q = 0u; q < n; ++q) {
-            unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & xm, my = c & ym;
+            unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & bb.xm, my = c & bb.ym;
             mf_real a;
-            if (mx < x0 || mx > x1 || my < y0 || my > y1) continue;
-            if (mx >= ix0 && mx <= ix1 && my >= iy0 && my <= iy1) { ++cnt; continue; }
+            if (mx < bb.x0 || mx > bb.x1 || my < bb.y0 || my > bb.y1) continue;
+            if (mx >= ib.x0 && mx <= ib.x1 && my >= ib.y0 && my <= ib.y1) { ++cnt; continue; }
             mf__ibm_unmorton(ibm->kx, ibm->ky, c, &x, &y);
             a = mf__ibm_texel_area(&pc, x, y);
             if (a >= MF_R(1.0)) ++cnt;
             else frac += a;
         }
-        s->w[i] = tot > MF_R(0.0) ? mf_clamp(((mf_real)cnt + frac) / tot, MF_R(0.0), MF_R(1.0)) : MF_R(0.0);
+        s->w[i] = mf_clamp(((mf_real)cnt + frac) / tot, MF_R(0.0), MF_R(1.0));   /* tot > 0: a piece has area */
     }
     return 1;
 }
@@ -1613,21 +1620,19 @@ MF_INLINE int mf__ibm_far(const mf_ibm *ibm, const mf_footprint *f, const int *b
     mf__ibm_box bx;
     for (i = 0; i < nb; ++i) {
         tot += mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
-        if (tot > 48u) return 0;
+        if (tot > MF__IBM_FEW_TEXELS) return 0;
     }
     if (!mf__ibm_near_extent(ibm, f, e)) return 0;
     bx = mf__ibm_extent_box(ibm, e);
     if (bx.ok) {
         /* the box does not wrap: compare the Morton codes' x and y bits with
          * its corners' (masked, they order like x and y), no decoding */
-        unsigned int xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u), ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
-        unsigned int x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)bx.x0, 0u), x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)bx.x1, 0u);
-        unsigned int y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)bx.y0), y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)bx.y1);
+        mf__ibm_cbox cb = mf__ibm_code_box(ibm, bx.x0, bx.y0, bx.x1, bx.y1);
         for (i = 0; i < nb; ++i) {
             n = mf__ibm_bin_info(ibm, bins[i], &base, &tab, &k);
             for (q = 0u; q < n; ++q) {
-                unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & xm, my = c & ym;
-                if (mx >= x0 && mx <= x1 && my >= y0 && my <= y1) return 0;
+                unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & cb.xm, my = c & cb.ym;
+                if (mx >= cb.x0 && mx <= cb.x1 && my >= cb.y0 && my <= cb.y1) return 0;
             }
         }
         return 1;
