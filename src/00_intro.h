@@ -213,7 +213,7 @@
  *          horizon-clipped sphere table in ltc_2.w). MF_FORCE_INLINE on the hot
  *          paths; Beckmann visible normals in closed form at normal
  *          incidence; mf_clamp as a max and a min (no compare-and-blend at
- *          -march=native); faster IBM queries and a 1.5x faster IBM build, in
+ *          -march=native); faster IBM queries and a 2x faster IBM build, in
  *          map format 2 (MF_IBM_VERSION 2, smaller: maps saved by 0.2.0
  *          are rebuilt); MF_FAST_MATH; solver iteration
  *          caps reported to tests (MF__SOLVER_DONE). The slope-space and GGX
