@@ -213,7 +213,8 @@
  *          horizon-clipped sphere table in ltc_2.w). MF_FORCE_INLINE on the hot
  *          paths; Beckmann visible normals in closed form at normal
  *          incidence; mf_clamp as a max and a min (no compare-and-blend at
- *          -march=native); faster IBM queries and a 2x faster IBM build, in
+ *          -march=native); faster IBM queries and build (the build 1.3-1.6x
+ *          the first 0.3.0 builder's on flake, smooth and rough maps), in
  *          map format 2 (MF_IBM_VERSION 2, smaller: maps saved by 0.2.0
  *          are rebuilt); MF_FAST_MATH; solver iteration
  *          caps reported to tests (MF__SOLVER_DONE). The slope-space and GGX
