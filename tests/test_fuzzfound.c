@@ -80,6 +80,18 @@ static void defects_ndf(void)
         ok = ok && all_finite(&d, graze, up) && fin((double)mf_D(&d, graze)) && fin((double)mf_D_visible(&d, up, graze));
     }
     MFT_CHECK(ok, "3: LEADR variances 1e20..1e28 at a grazing normal: D, D_visible, pdf finite");
+    {   /* 15: a mean slope 1.5e14 with variance 2.3e28 along x: at a normal
+         * 6.6e-15 from the horizon the exponent stays small and 1 / cos^4
+         * overflowed float (D = Inf) */
+        mf_leadr m;
+        mf_vec3 g = mf_normalize(mf_vec3_make(-1, 0, MF_R(6.55066779e-15)));
+        mf_real D;
+        m.E_x = MF_R(1.5265619e14); m.E_y = 0; m.E_xx = MF_R(4.66078257e28); m.E_yy = MF_R(0.00500000035); m.E_xy = 0;
+        d = mf_leadr_ndf(m);
+        D = mf_D(&d, g);
+        MFT_CHECK(fin((double)D) && D >= 0, "15: LEADR with a far mean slope at a grazing normal: D finite");
+        MFT_CHECK(fin((double)mf_D(&d, up)) && mf_D(&d, up) >= 0, "15: the same LEADR at the normal: D finite");
+    }
     /* 14: a sample only where the pdf is positive (Beckmann 0.01, normal
      * incidence, u = (0, 0)); and across the kinds, u on the edges */
     {
