@@ -5042,19 +5042,16 @@ MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
 {
     const mf_ndf_leadr *p = &d->p.leadr;
-    mf_real sx, sy, q, z2, v;
+    mf_real sx, sy, q, z2;
     if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
     sx = -wm.x / wm.z - p->mx;
     sy = -wm.y / wm.z - p->my;
     q = p->ixx * sx * sx + MF_R(2.0) * p->ixy * sx * sy + p->iyy * sy * sy;
     if (!(q >= MF_R(0.0) && q < MF_R(160.0))) return MF_R(0.0);   /* q < 0: float overflow */
     z2 = wm.z * wm.z;
-    v = p->norm * MF_EXP(MF_R(-0.5) * q);
-    if (!(v > MF_R(0.0))) return MF_R(0.0);
-    /* a mean slope far from the axis keeps q small at grazing wm, where
-     * 1 / cos^4 overflows (float): the largest value, not Inf */
-    v /= z2 * z2;
-    return v < MF_BIG ? v : MF_BIG;
+    /* capped: a mean slope far from the axis keeps q small at grazing wm,
+     * where 1 / cos^4 overflows (float) */
+    return mf__cap(p->norm * MF_EXP(MF_R(-0.5) * q) / (z2 * z2));
 }
 
 /* slope = mean + L n, n two standard normals */
