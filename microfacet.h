@@ -6015,6 +6015,7 @@ typedef struct mf__ibm_fp {
     mf_real x[4], y[4];        /* corners in texels, counterclockwise, center in the first period */
     mf_real cx, cy, ax, ay, bx, by;   /* center and edges in texels */
     mf_real area;              /* |A| in texels */
+    mf_real ex, ey;            /* half extents of A's bounding box */
     mf_real full;              /* periods entirely inside A */
 } mf__ibm_fp;
 
@@ -6114,35 +6115,35 @@ MF_INLINE void mf__ibm_slab_columns(const mf_ibm *ibm, int row, const mf_real *x
     }
 }
 
-/* Classifies a footprint: wraps the center into the first period, finds the
- * periods it covers entirely and the cells its boundary cuts. More than
- * MF_IBM_MAX_PIECES cut cells (or rows): the whole map's histogram
- * (MF__IBM_GLOBAL, see mf_ibm_bin_weight). Zero area or a non-finite edge:
- * the texel at the center; a non-finite center: nothing. */
-MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
+/* A footprint's shape, the first half of mf__ibm_footprint: the center
+ * wrapped into the first period, the edges in texels, |A|, the corners, and
+ * whether they all lie in the first period (inner). 1 when the corners are
+ * set (mode GLOBAL until mf__ibm_footprint has counted the cut cells);
+ * 0 when the mode is final (NONE, POINT, or GLOBAL for a huge A). */
+MF_INLINE int mf__ibm_footprint_shape(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
 {
-    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey, xs[12], ys[12];
-    int row, pieces = 0, edges_ok;
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey;
+    int edges_ok;
     p->mode = MF__IBM_NONE;
     p->direct = p->few = p->tiny = p->inner = 0;
     p->full = MF_R(0.0);
-    if (!f) return;
+    if (!f) return 0;
     /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
-    if (!mf__finite_bits(f->u) || !mf__finite_bits(f->v)) return;
+    if (!mf__finite_bits(f->u) || !mf__finite_bits(f->v)) return 0;
     edges_ok = mf__finite_bits(f->ax) && mf__finite_bits(f->ay) && mf__finite_bits(f->bx) && mf__finite_bits(f->by);
     p->cx = f->u * W; p->cy = f->v * H;
-    if (!(MF_FABS(p->cx) < MF_BIG) || !(MF_FABS(p->cy) < MF_BIG)) return;
+    if (!(MF_FABS(p->cx) < MF_BIG) || !(MF_FABS(p->cy) < MF_BIG)) return 0;
     if (!(p->cx >= MF_R(0.0) && p->cx < W)) p->cx -= W * MF_FLOOR(p->cx / W);   /* into the first period */
     if (!(p->cy >= MF_R(0.0) && p->cy < H)) p->cy -= H * MF_FLOOR(p->cy / H);
     if (!(p->cx >= MF_R(0.0)) || !(p->cx < W)) p->cx = MF_R(0.0);   /* rounding at the period edge */
     if (!(p->cy >= MF_R(0.0)) || !(p->cy < H)) p->cy = MF_R(0.0);
     p->tx = (int)p->cx; if (p->tx >= ibm->width || p->tx < 0) p->tx = p->tx < 0 ? 0 : ibm->width - 1;
     p->ty = (int)p->cy; if (p->ty >= ibm->height || p->ty < 0) p->ty = p->ty < 0 ? 0 : ibm->height - 1;
-    if (!edges_ok) { p->mode = MF__IBM_POINT; return; }
+    if (!edges_ok) { p->mode = MF__IBM_POINT; return 0; }
     p->ax = f->ax * W; p->ay = f->ay * H; p->bx = f->bx * W; p->by = f->by * H;
     cross = p->ax * p->by - p->ay * p->bx;
     p->area = MF_FABS(cross);
-    if (!(p->area >= MF_IBM_MIN_AREA)) { p->mode = MF__IBM_POINT; return; }
+    if (!(p->area >= MF_IBM_MIN_AREA)) { p->mode = MF__IBM_POINT; return 0; }
     {   /* a sliver thinner than 64 ulps of its coordinates would turn the
          * clipped areas into round-off (float): widen it across its longer
          * edge to that thickness (the sampler uses these same edges). 64
@@ -6161,10 +6162,10 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
             p->area = MF_FABS(cross);
         }
     }
-    ex = MF_R(0.5) * (MF_FABS(p->ax) + MF_FABS(p->bx));
-    ey = MF_R(0.5) * (MF_FABS(p->ay) + MF_FABS(p->by));
+    p->ex = ex = MF_R(0.5) * (MF_FABS(p->ax) + MF_FABS(p->bx));
+    p->ey = ey = MF_R(0.5) * (MF_FABS(p->ay) + MF_FABS(p->by));
     p->mode = MF__IBM_GLOBAL;
-    if (!(p->area < MF_BIG) || !(ex < (mf_real)MF_IBM_MAX_PIECES * W) || !(ey < (mf_real)MF_IBM_MAX_PIECES * H)) return;
+    if (!(p->area < MF_BIG) || !(ex < (mf_real)MF_IBM_MAX_PIECES * W) || !(ey < (mf_real)MF_IBM_MAX_PIECES * H)) return 0;
     {
         mf_real sa = cross > MF_R(0.0) ? MF_R(0.5) : MF_R(-0.5);   /* counterclockwise corners */
         p->x[0] = p->cx - MF_R(0.5) * p->ax - sa * p->bx; p->y[0] = p->cy - MF_R(0.5) * p->ay - sa * p->by;
@@ -6180,6 +6181,20 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         mf_real hy = mf_max(mf_max(p->y[0], p->y[1]), mf_max(p->y[2], p->y[3]));
         p->inner = lx >= MF_R(0.0) && hx <= W && ly >= MF_R(0.0) && hy <= H;
     }
+    return 1;
+}
+
+/* Classifies a footprint: its shape (mf__ibm_footprint_shape), the periods
+ * it covers entirely and the cells its boundary cuts. More than
+ * MF_IBM_MAX_PIECES cut cells (or rows): the whole map's histogram
+ * (MF__IBM_GLOBAL, see mf_ibm_bin_weight). Zero area or a non-finite edge:
+ * the texel at the center; a non-finite center: nothing. */
+MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
+{
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, ex, ey, xs[12], ys[12];
+    int row, pieces = 0;
+    if (!mf__ibm_footprint_shape(ibm, f, p)) return;
+    ex = p->ex; ey = p->ey;
     p->row0 = p->cy - ey >= MF_R(0.0) ? 0 : (int)MF_FLOOR((p->cy - ey) / H);   /* cy is in [0, H) */
     p->row1 = p->cy + ey < H ? 0 : (int)MF_FLOOR((p->cy + ey) / H);
     if (p->row1 > p->row0 && p->cy + ey == (mf_real)p->row1 * H) --p->row1;
@@ -6260,10 +6275,10 @@ MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row
     return 1;
 }
 
-/* The whole piece: its polygon (mf__ibm_piece_poly), the unit half-planes of
- * its edges and the texels wholly inside; 0 if it has no area. */
-MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
-                                 const mf_real *y, int n, mf__ibm_piece *pc)
+/* A piece's polygon (mf__ibm_piece_poly) and the unit half-planes of its
+ * edges: all that mf__ibm_texel_area needs; 0 if it has no area. */
+MF_INLINE int mf__ibm_piece_edges(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
+                                  const mf_real *y, int n, mf__ibm_piece *pc)
 {
     int i, m;
     if (!mf__ibm_piece_poly(ibm, p, row, col, x, y, n, pc)) return 0;
@@ -6277,6 +6292,17 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
         pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
     }
+    return 1;
+}
+
+/* The whole piece: its polygon and edges (mf__ibm_piece_edges) and the
+ * texels wholly inside; 0 if it has no area. */
+MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
+                                 const mf_real *y, int n, mf__ibm_piece *pc)
+{
+    int i, m;
+    if (!mf__ibm_piece_edges(ibm, p, row, col, x, y, n, pc)) return 0;
+    m = pc->n;
     {   /* texels [ix0, ix1) x [iy0, iy1) wholly inside (area 1 without
          * clipping): the rectangle itself, or a square about the vertex
          * mean that every edge keeps, less a margin of 0.05 texel so
@@ -6804,50 +6830,76 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     for (i = 0; i < nb; ++i) acc[i] += (mf_real)cnt[i] + frac[i];
 }
 
-/* The weights of a set of bins that hold few texels in all, for a
- * footprint inside one period (its only piece, A itself): each texel of the
- * bins by its position, its area in A as the traversal's leaves take it
- * (mf__ibm_texel_area), no traversal, no texel box and no bin-map reads.
- * 0 where the path does not apply (the caller goes on). */
+/* The weights of a set of bins that hold few texels, for a footprint
+ * inside one period (its only piece, A itself): at most 48 per bin of the
+ * set (the 21 bins: 1008; measured against 32, 64 and limits of 1024 and
+ * 4096 in all), one bin of at most 48 for a footprint of the direct path.
+ * Each texel of the bins by its position, no traversal and no bin-map
+ * reads: A's texel box on the Morton codes first. Its center in
+ * A's own coordinates, c + s a + t b with A at |s|, |t| <= 1/2, decides
+ * the texels wholly inside or outside (the texel spans s +- rs, t +- rt);
+ * only a texel that the boundary may cut is clipped (mf__ibm_texel_area, as
+ * the traversal's leaves take it), against A's piece, made on first need.
+ * rs and rt carry a margin for the rounding of s and t (coordinates up to
+ * the map's size, and the cancellation in a thin A), so that only clipping
+ * decides a texel near the boundary. 0 where the path does not apply (the
+ * caller goes on). */
 #define MF__IBM_FEW_TEXELS 48u
 static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
     mf__ibm_piece pc;
-    mf_real tot, frac;
-    unsigned int texels = 0u, n, base, tab, q, cnt;
-    mf__ibm_cbox bb, ib;
-    int i, k, x, y;
+    mf__ibm_cbox bb;
+    mf_real cr = p->ax * p->by - p->ay * p->bx, inv, rs, rt, err, tot = p->area, frac;
+    unsigned int texels = 0u, n, base, tab, q, cnt, lom;
+    int i, k, x, y, made = 0, kmin;
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
      * rows cost fewer cache lines than the lists of several bins (the 21
      * bins at 1 texel: twice the misses), so one bin only */
     if (!p->inner || (p->direct && s->n > 1)) return 0;   /* inner: no full period either */
     for (i = 0; i < s->n; ++i) {
         texels += (unsigned int)mf_ibm_bin_texels(ibm, s->bin[i]);
-        if (texels > MF__IBM_FEW_TEXELS) return 0;
+        if (texels > (p->direct ? MF__IBM_FEW_TEXELS : MF__IBM_FEW_TEXELS * (unsigned int)s->n)) return 0;
     }
     /* a small footprint's weights are divided by its texels' areas as they
      * add up (mf__ibm_weights), which takes every texel it covers: here only
-     * where the bin cannot hold them all */
-    if (p->few && (size_t)texels >= (size_t)ibm->width * (size_t)ibm->height) return 0;
-    for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
-    if (!mf__ibm_piece_make(ibm, p, 0, 0, p->x, p->y, 4, &pc)) return 1;
-    tot = mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));   /* as mf__ibm_weights takes |A| */
-    bb = mf__ibm_code_box(ibm, pc.bx0, pc.by0, pc.bx1 - 1, pc.by1 - 1);
-    ib = mf__ibm_code_box(ibm, pc.ix0, pc.iy0, pc.ix1 - 1, pc.iy1 - 1);
+     * where the bins cannot hold them all */
+    if ((size_t)texels >= (size_t)ibm->width * (size_t)ibm->height) return 0;
+    inv = MF_R(1.0) / MF_FABS(cr);   /* |A| >= MF_IBM_MIN_AREA */
+    err = MF_R(16.0) * MF_EPS * ((mf_real)(ibm->width + ibm->height) + p->ex + p->ey + MF_R(2.0)) * inv;
+    rs = (MF_R(0.5) * inv + err) * (MF_FABS(p->bx) + MF_FABS(p->by));
+    rt = (MF_R(0.5) * inv + err) * (MF_FABS(p->ax) + MF_FABS(p->ay));
+    if (cr < MF_R(0.0)) inv = -inv;
+    /* A's texel box as Morton-code bounds: most texels fail it, undecoded */
+    bb = mf__ibm_code_box(ibm, mf__ibm_ifloor(p->cx - p->ex), mf__ibm_ifloor(p->cy - p->ey), mf__ibm_iceil(p->cx + p->ex) - 1,
+                          mf__ibm_iceil(p->cy + p->ey) - 1);
+    kmin = ibm->kx < ibm->ky ? ibm->kx : ibm->ky;
+    lom = kmin >= 16 ? 0xffffffffu : (1u << (2 * kmin)) - 1u;   /* the interleaved bits */
     for (i = 0; i < s->n; ++i) {
         n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         cnt = 0u; frac = MF_R(0.0);
         for (q = 0u; q < n; ++q) {
             unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & bb.xm, my = c & bb.ym;
-            mf_real a;
+            mf_real dx, dy, as, at, a;
             if (mx < bb.x0 || mx > bb.x1 || my < bb.y0 || my > bb.y1) continue;
-            if (mx >= ib.x0 && mx <= ib.x1 && my >= ib.y0 && my <= ib.y1) { ++cnt; continue; }
-            mf__ibm_unmorton(ibm->kx, ibm->ky, c, &x, &y);
+            mf__ibm_unmorton_masked(mx, my, lom, kmin, &x, &y);
+            dx = (mf_real)x + MF_R(0.5) - p->cx; dy = (mf_real)y + MF_R(0.5) - p->cy;
+            as = MF_FABS((dx * p->by - dy * p->bx) * inv);
+            at = MF_FABS((p->ax * dy - p->ay * dx) * inv);
+            if (as >= MF_R(0.5) + rs || at >= MF_R(0.5) + rt) continue;       /* wholly outside */
+            if (as + rs <= MF_R(0.5) && at + rt <= MF_R(0.5)) { ++cnt; continue; }   /* wholly inside */
+            if (!made) {
+                if (!mf__ibm_piece_edges(ibm, p, 0, 0, p->x, p->y, 4, &pc)) {   /* no area */
+                    for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
+                    return 1;
+                }
+                tot = mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));   /* as mf__ibm_weights takes |A| */
+                made = 1;
+            }
             a = mf__ibm_texel_area(&pc, x, y);
             if (a >= MF_R(1.0)) ++cnt;
             else frac += a;
         }
-        s->w[i] = mf_clamp(((mf_real)cnt + frac) / tot, MF_R(0.0), MF_R(1.0));   /* tot > 0: a piece has area */
+        s->w[i] = mf_clamp(((mf_real)cnt + frac) / tot, MF_R(0.0), MF_R(1.0));
     }
     return 1;
 }
@@ -7124,6 +7176,13 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     mf__ibm_fp p;
     mf__ibm_set s;
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
+    mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
+    mf__ibm_set_add(&s, 0, 0, bin);
+    /* a bin of few texels and a footprint inside the period: its texels
+     * against A at once (mf__ibm_weights_few), no early exits needed */
+    if ((unsigned int)mf_ibm_bin_texels(ibm, bin) <= MF__IBM_FEW_TEXELS && mf__ibm_footprint_shape(ibm, f, &p) && p.inner &&
+        mf__ibm_weights_few(ibm, &p, &s))
+        return s.w[0];
     {
         mf__ibm_box nb;
         nb.ok = -1;
@@ -7131,8 +7190,6 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
             return MF_R(0.0);   /* no footprint work */
     }
     mf__ibm_footprint(ibm, f, &p);
-    mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
-    mf__ibm_set_add(&s, 0, 0, bin);
     mf__ibm_weights(ibm, &p, &s);
     return s.w[0];
 }

@@ -6,8 +6,9 @@
  *     every texel of every period it reaches, summed per bin; random tiny,
  *     medium, huge (several periods), rotated, thin, wrapping, axis-aligned and
  *     boundary-aligned footprints on a non-power-of-two smooth map and a flake
- *     map, through the direct sum, the kd traversal, the neighbourhood query
- *     and the single-bin query. Tolerance 1e-9 absolute in double (exact
+ *     map, through the direct sum, the kd traversal, the texel lists of
+ *     bins of few texels (one bin, and 21-bin sets of 49-1008 texels on a
+ *     256^2 map), the neighbourhood query and the single-bin query. Tolerance 1e-9 absolute in double (exact
  *     clipping up to round-off on coordinates below 1e3 texels: seen 5e-12),
  *     2e-5 in float (round-off of texel coordinates < 64 at 6e-8 relative over
  *     a few hundred cut texels: seen 9e-7); all bins' weights sum to 1 (same);
@@ -477,6 +478,57 @@ static void test_block_lengths(void)
         free(buf);
         free(fl);
     }
+}
+
+/* neighbourhood sets of a fine-binned smooth map (21 bins of 49 to 1008
+ * texels in all, a few per bin) against footprints of 2,500 to 14,000 box
+ * texels inside the period: the sets that mf__ibm_weights_few takes texel by
+ * texel from the bins' lists (at most 48 texels per bin of the set) rather
+ * than by kd traversal; the same bound as check_weights. The cases are
+ * counted so that the check cannot pass without them. */
+static void check_few_sets(void)
+{
+    const int W = 256;
+    mf_real *s = map_smooth(W, W, 1.0, 41);
+    double *wk = (double *)malloc(sizeof(double) * (size_t)(W * W)), *wb, err = 0;
+    const double tol = MFT_TOL(1e-9, 2e-5);
+    int t, i, q, cases = 0, nb;
+    mf_ibm ibm;
+    mft_rng r;
+    char msg[200];
+    mf_ibm_build(&ibm, s, W, W, (mf_real)0.02);
+    nb = mf_ibm_bin_count(&ibm);
+    wb = (double *)malloc(sizeof(double) * (size_t)nb);
+    mft_seed(&r, 42);
+    for (t = 0; t < 24; ++t) {
+        double ang = 2 * PI_D * mft_u01(&r), len = (50 + 70 * mft_u01(&r)) / W, asp = 0.5 + 0.5 * mft_u01(&r);
+        double sk = 0.6 * mft_u01(&r) - 0.3, u = 0.3 + 0.4 * mft_u01(&r), v = 0.3 + 0.4 * mft_u01(&r);
+        mf_footprint f = fp_make(u, v, len * cos(ang), len * sin(ang), -len * asp * (sin(ang) + sk * cos(ang)),
+                                 len * asp * (cos(ang) - sk * sin(ang)));
+        brute_texel_weights(&f, W, W, wk);
+        for (i = 0; i < nb; ++i) wb[i] = 0;
+        for (i = 0; i < W * W; ++i) wb[mf_ibm_texel_bin(&ibm, i % W, i / W)] += wk[i];
+        for (q = 0; q < 16; ++q) {
+            /* a center bin of a texel near the footprint's center */
+            int bins[MF_IBM_MAX_WINDOW], k, texels = 0;
+            mf_real ww[MF_IBM_MAX_WINDOW];
+            int c = mf_ibm_texel_bin(&ibm, (int)((u + 0.1 * (mft_u01(&r) - 0.5)) * W), (int)((v + 0.1 * (mft_u01(&r) - 0.5)) * W));
+            k = mf_ibm_neighbourhood_weights(&ibm, &f, c, bins, ww);
+            for (i = 0; i < k; ++i) {
+                texels += mf_ibm_bin_texels(&ibm, bins[i]);
+                err = fmax(err, fabs((double)ww[i] - wb[bins[i]]));
+            }
+            if (k > 1 && texels > 48 && texels <= 48 * k) ++cases;
+        }
+    }
+    snprintf(msg, sizeof msg, "neighbourhood weights = brute force, sets of 49-1008 texels, smooth 256x256 alpha 0.02 (%d sets, max err %.2e)",
+             cases, err);
+    MFT_NEAR(err, 0, 0, tol, msg);
+    MFT_CHECK(cases >= 200, "neighbourhood sets of 49 to 48 per bin texels: at least 200 of 384 queries");
+    mf_ibm_release(&ibm);
+    free(wb);
+    free(wk);
+    free(s);
 }
 
 static void test_weights(void)
@@ -1128,6 +1180,7 @@ void test_ibm(void)
     test_structure();
     test_block_lengths();
     test_weights();
+    check_few_sets();
     test_texel_contribution();
     test_convergence();
     test_sampling_pdf();
