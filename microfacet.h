@@ -6295,6 +6295,42 @@ MF_INLINE int mf__ibm_piece_edges(const mf_ibm *ibm, const mf__ibm_fp *p, int ro
     return 1;
 }
 
+/* mf__ibm_piece_edges for a footprint inside the period (inner), A itself:
+ * a parallelogram, whose opposite edges share their normal, without the
+ * clipping and the repeated-vertex pass; 0 where an edge rounds to zero
+ * length or A's box holds no texel (then mf__ibm_piece_edges decides). */
+MF_INLINE int mf__ibm_piece_inner(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_piece *pc)
+{
+    mf_real lx = mf_min(mf_min(p->x[0], p->x[1]), mf_min(p->x[2], p->x[3]));
+    mf_real hx = mf_max(mf_max(p->x[0], p->x[1]), mf_max(p->x[2], p->x[3]));
+    mf_real ly = mf_min(mf_min(p->y[0], p->y[1]), mf_min(p->y[2], p->y[3]));
+    mf_real hy = mf_max(mf_max(p->y[0], p->y[1]), mf_max(p->y[2], p->y[3]));
+    mf_real a[2], b[2];
+    int i;
+    pc->ox = pc->bx0 = mf__ibm_ifloor(lx); pc->oy = pc->by0 = mf__ibm_ifloor(ly);
+    pc->bx1 = mf__ibm_iceil(hx); pc->by1 = mf__ibm_iceil(hy);
+    if (pc->bx0 < 0 || pc->by0 < 0 || pc->bx1 > ibm->width || pc->by1 > ibm->height || pc->bx1 <= pc->bx0 || pc->by1 <= pc->by0)
+        return 0;
+    for (i = 0; i < 4; ++i) { pc->x[i] = p->x[i] - (mf_real)pc->ox; pc->y[i] = p->y[i] - (mf_real)pc->oy; }
+    for (i = 0; i < 2; ++i) {   /* edges 0 -> 1 and 1 -> 2; 2 -> 3 and 3 -> 0 point back */
+        mf_real ea = pc->y[i] - pc->y[i + 1], eb = pc->x[i + 1] - pc->x[i], l = MF_SQRT(ea * ea + eb * eb);
+        if (!(l > MF_R(0.0))) return 0;
+        a[i] = ea / l; b[i] = eb / l;
+    }
+    for (i = 0; i < 4; ++i) {
+        mf_real ea = i < 2 ? a[i] : -a[i - 2], eb = i < 2 ? b[i] : -b[i - 2];
+        pc->ea[i] = ea; pc->eb[i] = eb;
+        pc->elo[i] = mf_min(ea, MF_R(0.0)) + mf_min(eb, MF_R(0.0));
+        pc->ehi[i] = mf_max(ea, MF_R(0.0)) + mf_max(eb, MF_R(0.0));
+        pc->ec[i] = -(ea * pc->x[i] + eb * pc->y[i]);
+    }
+    pc->n = 4;
+    pc->rect = p->rect;
+    pc->rx0 = lx - (mf_real)pc->ox; pc->rx1 = hx - (mf_real)pc->ox;
+    pc->ry0 = ly - (mf_real)pc->oy; pc->ry1 = hy - (mf_real)pc->oy;
+    return 1;
+}
+
 /* The whole piece: its polygon and edges (mf__ibm_piece_edges) and the
  * texels wholly inside; 0 if it has no area. */
 MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row, int col, const mf_real *x,
@@ -6588,12 +6624,19 @@ typedef struct mf__ibm_cbox { unsigned int xm, ym, x0, x1, y0, y1; } mf__ibm_cbo
 MF_INLINE mf__ibm_cbox mf__ibm_code_box(const mf_ibm *ibm, int x0, int y0, int x1, int y1)
 {
     mf__ibm_cbox b;
-    b.xm = mf__ibm_morton(ibm->kx, ibm->ky, (1u << ibm->kx) - 1u, 0u);
-    b.ym = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (1u << ibm->ky) - 1u);
+    /* mf__ibm_morton of one axis alone: the low k bits spread (x to the
+     * odd positions), the longer axis's bits above them */
+    int kx = ibm->kx, ky = ibm->ky, k = kx < ky ? kx : ky;
+    unsigned int lo = k >= 16 ? 0xffffffffu : (1u << (2 * k)) - 1u, m = (1u << k) - 1u;
+    unsigned int hi = kx == ky ? 0u : ((1u << (kx > ky ? kx - k : ky - k)) - 1u) << (2 * k);
+    b.xm = (0xaaaaaaaau & lo) | (kx > ky ? hi : 0u);
+    b.ym = (0x55555555u & lo) | (ky > kx ? hi : 0u);
     b.x0 = b.y0 = 1u; b.x1 = b.y1 = 0u;
     if (x1 < x0 || y1 < y0) return b;
-    b.x0 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)x0, 0u); b.x1 = mf__ibm_morton(ibm->kx, ibm->ky, (unsigned int)x1, 0u);
-    b.y0 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)y0); b.y1 = mf__ibm_morton(ibm->kx, ibm->ky, 0u, (unsigned int)y1);
+#define MF__IBM_AXIS(v, sh, longer) ((mf__ibm_spread((unsigned int)(v) & m) << (sh)) | ((longer) ? ((unsigned int)(v) >> k) << (2 * k) : 0u))
+    b.x0 = MF__IBM_AXIS(x0, 1, kx > ky); b.x1 = MF__IBM_AXIS(x1, 1, kx > ky);
+    b.y0 = MF__IBM_AXIS(y0, 0, ky > kx); b.y1 = MF__IBM_AXIS(y1, 0, ky > kx);
+#undef MF__IBM_AXIS
     return b;
 }
 
@@ -6857,7 +6900,7 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
      * bins at 1 texel: twice the misses), so one bin only */
     if (!p->inner || (p->direct && s->n > 1)) return 0;   /* inner: no full period either */
     for (i = 0; i < s->n; ++i) {
-        texels += (unsigned int)mf_ibm_bin_texels(ibm, s->bin[i]);
+        texels += mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         if (texels > (p->direct ? MF__IBM_FEW_TEXELS : MF__IBM_FEW_TEXELS * (unsigned int)s->n)) return 0;
     }
     /* a small footprint's weights are divided by its texels' areas as they
@@ -6888,7 +6931,7 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
             if (as >= MF_R(0.5) + rs || at >= MF_R(0.5) + rt) continue;       /* wholly outside */
             if (as + rs <= MF_R(0.5) && at + rt <= MF_R(0.5)) { ++cnt; continue; }   /* wholly inside */
             if (!made) {
-                if (!mf__ibm_piece_edges(ibm, p, 0, 0, p->x, p->y, 4, &pc)) {   /* no area */
+                if (!mf__ibm_piece_inner(ibm, p, &pc) && !mf__ibm_piece_edges(ibm, p, 0, 0, p->x, p->y, 4, &pc)) {   /* no area */
                     for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
                     return 1;
                 }
@@ -7178,11 +7221,14 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
-    /* a bin of few texels and a footprint inside the period: its texels
-     * against A at once (mf__ibm_weights_few), no early exits needed */
-    if ((unsigned int)mf_ibm_bin_texels(ibm, bin) <= MF__IBM_FEW_TEXELS && mf__ibm_footprint_shape(ibm, f, &p) && p.inner &&
-        mf__ibm_weights_few(ibm, &p, &s))
-        return s.w[0];
+    {   /* a bin of few texels and a footprint inside the period: its texels
+         * against A at once (mf__ibm_weights_few), no early exits needed */
+        unsigned int base, tab;
+        int k;
+        if (mf__ibm_bin_info(ibm, bin, &base, &tab, &k) <= MF__IBM_FEW_TEXELS && mf__ibm_footprint_shape(ibm, f, &p) && p.inner &&
+            mf__ibm_weights_few(ibm, &p, &s))
+            return s.w[0];
+    }
     {
         mf__ibm_box nb;
         nb.ok = -1;
