@@ -1864,6 +1864,9 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
         }
     }
     if (s.n == 0) return MF_R(0.0);
+    /* the bins' mean normals, read below: their loads start now, under the
+     * weights' work */
+    for (i = 0; i < s.n; ++i) MF__PREFETCH(ibm->data + ibm->mean_at + (size_t)s.bin[i]);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
