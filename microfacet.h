@@ -3967,9 +3967,12 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * the footprint without descending. Footprints of a few texels get their
  * texels' areas row by row (one clip per row and per texel side); a texel
  * (or node) cut by one footprint edge gets its area in closed form. Bins
- * that hold at most 48 texels in all, for a footprint inside one period,
- * take their texels' areas from their positions without a traversal (one
- * bin only where the footprint's box would be visited). */
+ * that hold at most 48 texels each on average, for a footprint inside one
+ * period, take their texels from their lists without a traversal: a
+ * texel's center in the footprint's coordinates decides it wholly inside or
+ * outside, and only texels that the boundary may cut are clipped (one bin
+ * of at most 48 only where the footprint's box would be visited; a single
+ * bin of at most 48 also skips the early exits above). */
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
 /* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
