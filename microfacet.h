@@ -6229,6 +6229,16 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
     }
 }
 
+/* a piece's vertex count, rectangle flag and its extent [lx, hx] x [ly, hy]
+ * (first-period coordinates) relative to its origin */
+MF_INLINE void mf__ibm_piece_close(mf__ibm_piece *pc, const mf__ibm_fp *p, int m, mf_real lx, mf_real hx, mf_real ly, mf_real hy)
+{
+    pc->n = m;
+    pc->rect = p->rect;
+    pc->rx0 = lx - (mf_real)pc->ox; pc->rx1 = hx - (mf_real)pc->ox;
+    pc->ry0 = ly - (mf_real)pc->oy; pc->ry1 = hy - (mf_real)pc->oy;
+}
+
 /* The polygon of the piece of slab (x, y, n) in column `col`, shifted to the
  * first period: vertices relative to (ox, oy), its texel box and rectangle;
  * 0 if it has no area. */
@@ -6271,11 +6281,17 @@ MF_INLINE int mf__ibm_piece_poly(const mf_ibm *ibm, const mf__ibm_fp *p, int row
         m = k;
     }
     if (m < 3 || !(mf__ibm_shoelace(pc->x, pc->y, m, MF_R(0.0), MF_R(0.0)) > MF_R(0.0))) return 0;
-    pc->n = m;
-    pc->rect = p->rect;
-    pc->rx0 = lx - (mf_real)pc->ox; pc->rx1 = hx - (mf_real)pc->ox;
-    pc->ry0 = ly - (mf_real)pc->oy; pc->ry1 = hy - (mf_real)pc->oy;
+    mf__ibm_piece_close(pc, p, m, lx, hx, ly, hy);
     return 1;
+}
+
+/* edge i's half-plane a x + b y + c >= 0 (a, b a unit normal) and the least
+ * and largest of a x + b y over the unit square */
+MF_INLINE void mf__ibm_half_plane(mf__ibm_piece *pc, int i, mf_real a, mf_real b, mf_real c)
+{
+    pc->ea[i] = a; pc->eb[i] = b; pc->ec[i] = c;
+    pc->elo[i] = mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0));
+    pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
 }
 
 /* A piece's polygon (mf__ibm_piece_poly) and the unit half-planes of its
@@ -6290,10 +6306,7 @@ MF_INLINE int mf__ibm_piece_edges(const mf_ibm *ibm, const mf__ibm_fp *p, int ro
         int k = i + 1 == m ? 0 : i + 1;
         mf_real a = pc->y[i] - pc->y[k], b = pc->x[k] - pc->x[i], l = MF_SQRT(a * a + b * b);
         if (l > MF_R(0.0)) { a /= l; b /= l; }
-        pc->ea[i] = a; pc->eb[i] = b;
-        pc->elo[i] = mf_min(a, MF_R(0.0)) + mf_min(b, MF_R(0.0));
-        pc->ehi[i] = mf_max(a, MF_R(0.0)) + mf_max(b, MF_R(0.0));
-        pc->ec[i] = l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0);
+        mf__ibm_half_plane(pc, i, a, b, l > MF_R(0.0) ? -(a * pc->x[i] + b * pc->y[i]) : MF_R(1.0));
     }
     return 1;
 }
@@ -6322,15 +6335,9 @@ MF_INLINE int mf__ibm_piece_inner(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ib
     }
     for (i = 0; i < 4; ++i) {
         mf_real ea = i < 2 ? a[i] : -a[i - 2], eb = i < 2 ? b[i] : -b[i - 2];
-        pc->ea[i] = ea; pc->eb[i] = eb;
-        pc->elo[i] = mf_min(ea, MF_R(0.0)) + mf_min(eb, MF_R(0.0));
-        pc->ehi[i] = mf_max(ea, MF_R(0.0)) + mf_max(eb, MF_R(0.0));
-        pc->ec[i] = -(ea * pc->x[i] + eb * pc->y[i]);
+        mf__ibm_half_plane(pc, i, ea, eb, -(ea * pc->x[i] + eb * pc->y[i]));
     }
-    pc->n = 4;
-    pc->rect = p->rect;
-    pc->rx0 = lx - (mf_real)pc->ox; pc->rx1 = hx - (mf_real)pc->ox;
-    pc->ry0 = ly - (mf_real)pc->oy; pc->ry1 = hy - (mf_real)pc->oy;
+    mf__ibm_piece_close(pc, p, 4, lx, hx, ly, hy);
     return 1;
 }
 
