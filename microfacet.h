@@ -6411,7 +6411,7 @@ MF_INLINE int mf__ibm_classify(const mf__ibm_piece *pc, int x0, int y0, int x1, 
 MF_INLINE mf_real mf__ibm_rect_area(const mf__ibm_piece *pc, mf_real X, mf_real Y, mf_real W, mf_real H,
                                     const mf_real *elo, const mf_real *ehi)
 {
-    mf_real xa[16], ya[16], xb[16], yb[16], cv[12];
+    mf_real xa[16], ya[16], xb[16], yb[16], cv[12], *px = xa, *py = ya, *qx = xb, *qy = yb, *t;
     int i, cut[12], nc = 0, n = 4;
     if (pc->rect) {
         mf_real w = mf_min(X + W, pc->rx1) - mf_max(X, pc->rx0);
@@ -6432,12 +6432,12 @@ MF_INLINE mf_real mf__ibm_rect_area(const mf__ibm_piece *pc, mf_real X, mf_real 
     }
     xa[0] = MF_R(0.0); ya[0] = MF_R(0.0); xa[1] = W; ya[1] = MF_R(0.0);
     xa[2] = W; ya[2] = H; xa[3] = MF_R(0.0); ya[3] = H;
-    for (i = 0; i < nc && n >= 3; ++i) {
-        int k;
-        n = mf__ibm_clip_line(xa, ya, n, pc->ea[cut[i]], pc->eb[cut[i]], cv[i], xb, yb);
-        for (k = 0; k < n; ++k) { xa[k] = xb[k]; ya[k] = yb[k]; }
+    for (i = 0; i < nc && n >= 3; ++i) {   /* the two buffers in turn, nothing copied */
+        n = mf__ibm_clip_line(px, py, n, pc->ea[cut[i]], pc->eb[cut[i]], cv[i], qx, qy);
+        t = px; px = qx; qx = t;
+        t = py; py = qy; qy = t;
     }
-    return n >= 3 ? mf_max(mf__ibm_shoelace(xa, ya, n, MF_R(0.0), MF_R(0.0)), MF_R(0.0)) : MF_R(0.0);
+    return n >= 3 ? mf_max(mf__ibm_shoelace(px, py, n, MF_R(0.0), MF_R(0.0)), MF_R(0.0)) : MF_R(0.0);
 }
 
 /* |piece ∩ texel (tx, ty)| in texels (mf__ibm_rect_area of the unit square) */
