@@ -731,17 +731,15 @@ MF_INLINE int mf__ibm_footprint_shape(const mf_ibm *ibm, const mf_footprint *f, 
     return 1;
 }
 
-/* Classifies a footprint: its shape (mf__ibm_footprint_shape), the periods
- * it covers entirely and the cells its boundary cuts. More than
- * MF_IBM_MAX_PIECES cut cells (or rows): the whole map's histogram
- * (MF__IBM_GLOBAL, see mf_ibm_bin_weight). Zero area or a non-finite edge:
- * the texel at the center; a non-finite center: nothing. */
-MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
+/* The second half of mf__ibm_footprint, for a footprint whose shape is
+ * set (mf__ibm_footprint_shape returned 1): the periods it covers entirely
+ * and the cells its boundary cuts. More than MF_IBM_MAX_PIECES cut cells
+ * (or rows): the whole map's histogram (MF__IBM_GLOBAL, see
+ * mf_ibm_bin_weight). */
+MF_INLINE void mf__ibm_footprint_cells(const mf_ibm *ibm, mf__ibm_fp *p)
 {
-    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, ex, ey, xs[12], ys[12];
+    mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, ex = p->ex, ey = p->ey, xs[12], ys[12];
     int row, pieces = 0;
-    if (!mf__ibm_footprint_shape(ibm, f, p)) return;
-    ex = p->ex; ey = p->ey;
     p->row0 = p->cy - ey >= MF_R(0.0) ? 0 : (int)MF_FLOOR((p->cy - ey) / H);   /* cy is in [0, H) */
     p->row1 = p->cy + ey < H ? 0 : (int)MF_FLOOR((p->cy + ey) / H);
     if (p->row1 > p->row0 && p->cy + ey == (mf_real)p->row1 * H) --p->row1;
@@ -771,6 +769,14 @@ MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__i
         p->bx0 = mf__ibm_ifloor(p->cx - ex); p->bx1 = mf__ibm_iceil(p->cx + ex);
         p->by0 = mf__ibm_ifloor(p->cy - ey); p->by1 = mf__ibm_iceil(p->cy + ey);
     }
+}
+
+/* Classifies a footprint: its shape (mf__ibm_footprint_shape), then its
+ * periods and cut cells (mf__ibm_footprint_cells). Zero area or a
+ * non-finite edge: the texel at the center; a non-finite center: nothing. */
+MF_INLINE void mf__ibm_footprint(const mf_ibm *ibm, const mf_footprint *f, mf__ibm_fp *p)
+{
+    if (mf__ibm_footprint_shape(ibm, f, p)) mf__ibm_footprint_cells(ibm, p);
 }
 
 /* a piece's vertex count, rectangle flag and its extent [lx, hx] x [ly, hy]
@@ -1174,7 +1180,11 @@ typedef struct mf__ibm_frame {
  * bounds on Morton codes: a code's x bits (masked by xm) and y bits (ym)
  * compare like x and y themselves, so that a texel's code is tested against
  * the box without decoding it. */
-typedef struct mf__ibm_cbox { unsigned int xm, ym, x0, x1, y0, y1; } mf__ibm_cbox;
+typedef struct mf__ibm_cbox {
+    unsigned int xm, ym, x0, x1, y0, y1;
+    unsigned int lom;   /* the interleaved bits, and their count per axis (mf__ibm_unmorton_masked) */
+    int kmin;
+} mf__ibm_cbox;
 MF_INLINE mf__ibm_cbox mf__ibm_code_box(const mf_ibm *ibm, int x0, int y0, int x1, int y1)
 {
     mf__ibm_cbox b;
@@ -1185,6 +1195,7 @@ MF_INLINE mf__ibm_cbox mf__ibm_code_box(const mf_ibm *ibm, int x0, int y0, int x
     unsigned int hi = kx == ky ? 0u : ((1u << (kx > ky ? kx - k : ky - k)) - 1u) << (2 * k);
     b.xm = (0xaaaaaaaau & lo) | (kx > ky ? hi : 0u);
     b.ym = (0x55555555u & lo) | (ky > kx ? hi : 0u);
+    b.lom = lo; b.kmin = k;
     b.x0 = b.y0 = 1u; b.x1 = b.y1 = 0u;
     if (x1 < x0 || y1 < y0) return b;
 #define MF__IBM_AXIS(v, sh, longer) ((mf__ibm_spread((unsigned int)(v) & m) << (sh)) | ((longer) ? ((unsigned int)(v) >> k) << (2 * k) : 0u))
@@ -1246,8 +1257,8 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
     mf__ibm_cbox ib = mf__ibm_code_box(ibm, pc->ix0, pc->iy0, pc->ix1 - 1, pc->iy1 - 1);
     unsigned int xm = bb.xm, ym = bb.ym, bx0 = bb.x0, bx1 = bb.x1, by0 = bb.y0, by1 = bb.y1;
     unsigned int ix0 = ib.x0, ix1 = ib.x1, iy0 = ib.y0, iy1 = ib.y1;
-    int kmin = ibm->kx < ibm->ky ? ibm->kx : ibm->ky;
-    unsigned int lom = kmin >= 16 ? 0xffffffffu : (1u << (2 * kmin)) - 1u;   /* the interleaved bits */
+    int kmin = bb.kmin;
+    unsigned int lom = bb.lom;
     /* rounding bound of the edge functions of the piece's coordinates (at
      * most S, the texels its box spans, each), with room to spare */
     mf_real margin = MF_R(64.0) * (mf_real)MF_EPS * ((mf_real)(pc->bx1 - pc->ox + pc->by1 - pc->oy) + MF_R(2.0));
@@ -1447,8 +1458,8 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     mf__ibm_piece pc;
     mf__ibm_cbox bb;
     mf_real cr = p->ax * p->by - p->ay * p->bx, inv, rs, rt, err, tot = p->area, frac;
-    unsigned int texels = 0u, n, base, tab, q, cnt, lom;
-    int i, k, x, y, made = 0, kmin;
+    unsigned int texels = 0u, n, base, tab, q, cnt;
+    int i, k, x, y, made = 0;
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
      * rows cost fewer cache lines than the lists of several bins (the 21
      * bins at 1 texel: twice the misses), so one bin only */
@@ -1469,8 +1480,6 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     /* A's texel box as Morton-code bounds: most texels fail it, undecoded */
     bb = mf__ibm_code_box(ibm, mf__ibm_ifloor(p->cx - p->ex), mf__ibm_ifloor(p->cy - p->ey), mf__ibm_iceil(p->cx + p->ex) - 1,
                           mf__ibm_iceil(p->cy + p->ey) - 1);
-    kmin = ibm->kx < ibm->ky ? ibm->kx : ibm->ky;
-    lom = kmin >= 16 ? 0xffffffffu : (1u << (2 * kmin)) - 1u;   /* the interleaved bits */
     for (i = 0; i < s->n; ++i) {
         n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         cnt = 0u; frac = MF_R(0.0);
@@ -1478,7 +1487,7 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
             unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & bb.xm, my = c & bb.ym;
             mf_real dx, dy, as, at, a;
             if (mx < bb.x0 || mx > bb.x1 || my < bb.y0 || my > bb.y1) continue;
-            mf__ibm_unmorton_masked(mx, my, lom, kmin, &x, &y);
+            mf__ibm_unmorton_masked(mx, my, bb.lom, bb.kmin, &x, &y);
             dx = (mf_real)x + MF_R(0.5) - p->cx; dy = (mf_real)y + MF_R(0.5) - p->cy;
             as = MF_FABS((dx * p->by - dy * p->bx) * inv);
             at = MF_FABS((p->ax * dy - p->ay * dx) * inv);
@@ -1772,6 +1781,7 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
 {
     mf__ibm_fp p;
     mf__ibm_set s;
+    int shaped = -1;   /* mf__ibm_footprint_shape's result; -1: not called */
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
@@ -1779,9 +1789,10 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
          * against A at once (mf__ibm_weights_few), no early exits needed */
         unsigned int base, tab;
         int k;
-        if (mf__ibm_bin_info(ibm, bin, &base, &tab, &k) <= MF__IBM_FEW_TEXELS && mf__ibm_footprint_shape(ibm, f, &p) && p.inner &&
-            mf__ibm_weights_few(ibm, &p, &s))
-            return s.w[0];
+        if (mf__ibm_bin_info(ibm, bin, &base, &tab, &k) <= MF__IBM_FEW_TEXELS) {
+            shaped = mf__ibm_footprint_shape(ibm, f, &p);
+            if (shaped && p.inner && mf__ibm_weights_few(ibm, &p, &s)) return s.w[0];
+        }
     }
     {
         mf__ibm_box nb;
@@ -1789,7 +1800,8 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
         if (mf__ibm_bin_near(ibm, mf__ibm_off(ibm, bin), mf__ibm_off(ibm, bin + 1), f, &nb) < 2 || mf__ibm_far(ibm, f, &bin, 1))
             return MF_R(0.0);   /* no footprint work */
     }
-    mf__ibm_footprint(ibm, f, &p);
+    if (shaped < 0) mf__ibm_footprint(ibm, f, &p);
+    else if (shaped) mf__ibm_footprint_cells(ibm, &p);   /* the shape is set: its second half */
     mf__ibm_weights(ibm, &p, &s);
     return s.w[0];
 }
