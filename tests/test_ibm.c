@@ -183,6 +183,14 @@ static int brute_texel_weights(const mf_footprint *f, int w, int h, double *wk)
     return 1;
 }
 
+/* the bins' weights from texel weights wk: wb[j] = sum of wk over bin j's texels */
+static void brute_bin_sums(const mf_ibm *ibm, const double *wk, double *wb)
+{
+    int i, n = ibm->width * ibm->height;
+    for (i = 0; i < mf_ibm_bin_count(ibm); ++i) wb[i] = 0;
+    for (i = 0; i < n; ++i) wb[mf_ibm_texel_bin(ibm, i % ibm->width, i / ibm->width)] += wk[i];
+}
+
 /* C(wo, wi, t) (Eq. 3.29) independently: the Beckmann BRDF in t's frame */
 static double texel_C(double alpha, const mf_ndf *shadow, mf_vec3 wo, mf_vec3 wi, mf_vec3 t)
 {
@@ -205,6 +213,13 @@ static mf_footprint fp_make(double u, double v, double ax, double ay, double bx,
     return f;
 }
 
+/* a parallelogram at (u, v): edge a of length s at angle ang, edge b
+ * across it, asp times as long, skewed by sk */
+static mf_footprint fp_rotated(double u, double v, double s, double ang, double asp, double sk)
+{
+    return fp_make(u, v, s * cos(ang), s * sin(ang), -s * asp * (sin(ang) + sk * cos(ang)), s * asp * (cos(ang) - sk * sin(ang)));
+}
+
 /* random footprint of a kind: 0 tiny, 1 medium, 2 large, 3 huge (periods),
  * 4 thin, 5 axis-aligned, 6 wrapping corner; sizes in texture units */
 static mf_footprint fp_random(mft_rng *r, int kind, int w)
@@ -220,7 +235,7 @@ static mf_footprint fp_random(mft_rng *r, int kind, int w)
     case 5: s = tex * (2 + 30 * mft_u01(r)); ang = 0; sk = 0; asp = 0.3 + mft_u01(r); break;
     default: s = tex * (4 + 20 * mft_u01(r)); u = 1.0 - tex; v = -0.5 * tex; break;
     }
-    return fp_make(u, v, s * cos(ang), s * sin(ang), -s * asp * (sin(ang) + sk * cos(ang)), s * asp * (cos(ang) - sk * sin(ang)));
+    return fp_rotated(u, v, s, ang, asp, sk);
 }
 
 /* the truncation of Eq. 5.13 (Sec. 5.4.2): the bin of t is among the bins
@@ -401,8 +416,7 @@ static void check_weights(const char *name, const mf_real *n, int w, int h, doub
         int bins[MF_IBM_MAX_WINDOW], k, c;
         mf_real ww[MF_IBM_MAX_WINDOW];
         brute_texel_weights(&f, w, h, wk);
-        for (i = 0; i < nb; ++i) wb[i] = 0;
-        for (i = 0; i < w * h; ++i) wb[mf_ibm_texel_bin(&ibm, i % w, i / w)] += wk[i];
+        brute_bin_sums(&ibm, wk, wb);
         for (i = 0; i < nb; ++i) {
             double g;
             if (mf_ibm_bin_texels(&ibm, i) == 0) continue;
@@ -503,11 +517,9 @@ static void check_few_sets(void)
     for (t = 0; t < 24; ++t) {
         double ang = 2 * PI_D * mft_u01(&r), len = (50 + 70 * mft_u01(&r)) / W, asp = 0.5 + 0.5 * mft_u01(&r);
         double sk = 0.6 * mft_u01(&r) - 0.3, u = 0.3 + 0.4 * mft_u01(&r), v = 0.3 + 0.4 * mft_u01(&r);
-        mf_footprint f = fp_make(u, v, len * cos(ang), len * sin(ang), -len * asp * (sin(ang) + sk * cos(ang)),
-                                 len * asp * (cos(ang) - sk * sin(ang)));
+        mf_footprint f = fp_rotated(u, v, len, ang, asp, sk);
         brute_texel_weights(&f, W, W, wk);
-        for (i = 0; i < nb; ++i) wb[i] = 0;
-        for (i = 0; i < W * W; ++i) wb[mf_ibm_texel_bin(&ibm, i % W, i / W)] += wk[i];
+        brute_bin_sums(&ibm, wk, wb);
         for (q = 0; q < 16; ++q) {
             /* a center bin of a texel near the footprint's center */
             int bins[MF_IBM_MAX_WINDOW], k, texels = 0;
@@ -1028,7 +1040,7 @@ static void test_truncation(void)
     const char *names[3] = { "flat", "smooth", "flakes" };
     mf_footprint f = fp_make(0.37, 0.52, 0.2, 0.05, -0.04, 0.22);
     double *wk = (double *)malloc(sizeof(double) * W * W), worst = 0, mean = 0;
-    int m, k, i, cnt = 0;
+    int m, k, cnt = 0;
     char msg[200];
     maps[0] = map_const(W, W, mf_vec3_make(0, 0, 1));
     maps[1] = map_smooth(W, W, 0.5, 91);
@@ -1039,8 +1051,8 @@ static void test_truncation(void)
         double *wb;
         mf_ibm_build(&ibm, maps[m], W, W, MF_R(0.05));
         mf_ibm_set_shadowing(&ibm, NULL);
-        wb = (double *)calloc((size_t)mf_ibm_bin_count(&ibm), sizeof(double));
-        for (i = 0; i < W * W; ++i) wb[mf_ibm_texel_bin(&ibm, i % W, i / W)] += wk[i];
+        wb = (double *)malloc(sizeof(double) * (size_t)mf_ibm_bin_count(&ibm));
+        brute_bin_sums(&ibm, wk, wb);
         for (k = 0; k < 3; ++k) {
             mf_vec3 wo = mft_dir(0.6 * k, 0.7);
             q_ctx qc;
