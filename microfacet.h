@@ -6939,9 +6939,13 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     for (i = 0; i < s->n; ++i) {
         n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         cnt = 0u; frac = MF_R(0.0);
-        for (q = 0u; q < n; ++q) {
+        /* the box's codes lie in [x0 | y0, x1 | y1] (each axis's bits
+         * compare like the axis): the sorted list from its lower bound */
+        q = n > 8u ? mf__ibm_lower(ibm->data + ibm->pos_at, ibm->list_bits, base, 0u, n, bb.x0 | bb.y0) : 0u;
+        for (; q < n; ++q) {
             unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & bb.xm, my = c & bb.ym;
             mf_real dx, dy, as, at, a;
+            if (c > (bb.x1 | bb.y1)) break;
             if (mx < bb.x0 || mx > bb.x1 || my < bb.y0 || my > bb.y1) continue;
             mf__ibm_unmorton_masked(mx, my, bb.lom, bb.kmin, &x, &y);
             dx = (mf_real)x + MF_R(0.5) - p->cx; dy = (mf_real)y + MF_R(0.5) - p->cy;
@@ -7313,8 +7317,9 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf__ibm_fp p;
     mf_real gx = MF_R(-1.0), a = ibm->alpha, sf = MF_R(0.0), spdf = MF_R(0.0);
     mf_vec3 h;
-    int r = ibm->radius, b = ibm->res, cx, cy, i, small, nb = 0;
+    int r = ibm->radius, b = ibm->res, cx, cy, i, small, nb = 0, known = 0;
     int near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW];
+    mf_vec3 tn[MF_IBM_MAX_WINDOW];   /* the set's mean normals, where the facing test read them (known) */
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
@@ -7332,25 +7337,27 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
          * face wo (and wi when only f is wanted), which spares their
          * traversal (small ones are checked after their weights) */
         if (small && (nb = mf__ibm_near_bins(ibm, f, cx, cy, near, ndx, ndy)) == 0) return MF_R(0.0);
+        known = p.mode == MF__IBM_EXACT && !p.direct;
         for (i = 0; i < nb; ++i) {
-            if (p.mode == MF__IBM_EXACT && !p.direct) {
+            if (known) {
                 mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
                 if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
+                tn[s.n] = t;
             }
             mf__ibm_set_add(&s, ndx[i], ndy[i], near[i]);
         }
     }
     if (s.n == 0) return MF_R(0.0);
-    /* the bins' mean normals, read below: their loads start now, under the
-     * weights' work */
-    for (i = 0; i < s.n; ++i) MF__PREFETCH(ibm->data + ibm->mean_at + (size_t)s.bin[i]);
+    /* the bins' mean normals, read below unless the facing test has: their
+     * loads start now, under the weights' work */
+    if (!known) for (i = 0; i < s.n; ++i) MF__PREFETCH(ibm->data + ibm->mean_at + (size_t)s.bin[i]);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
         mf_real co, ci, ch, d, lo;
         if (!(s.w[i] > MF_R(0.0))) continue;
-        t = mf_ibm_bin_normal(ibm, s.bin[i]);
+        t = known ? tn[i] : mf_ibm_bin_normal(ibm, s.bin[i]);
         co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
         if (!(co > MF_R(0.0)) || !(ch > MF_R(0.0))) continue;
         xh = mf_cross(h, t); xo = mf_cross(wo, t);
