@@ -558,6 +558,7 @@ typedef struct mf__ibm_fp {
     int bx0, by0, bx1, by1;    /* direct: texels [bx0, bx1) x [by0, by1) (unwrapped) hold A */
     int rect;                  /* axis-aligned: every piece is a rectangle */
     int inner;                 /* every corner in the first period: A is its only piece, unclipped */
+    int mapped;                /* direct: its box's bin-map rows were read (the set was found there) */
     int row0, row1;            /* period rows touched */
     mf_real x[4], y[4];        /* corners in texels, counterclockwise, center in the first period */
     mf_real cx, cy, ax, ay, bx, by;   /* center and edges in texels */
@@ -672,7 +673,7 @@ MF_INLINE int mf__ibm_footprint_shape(const mf_ibm *ibm, const mf_footprint *f, 
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey;
     int edges_ok;
     p->mode = MF__IBM_NONE;
-    p->direct = p->few = p->tiny = p->inner = 0;
+    p->direct = p->few = p->tiny = p->inner = p->mapped = 0;
     p->full = MF_R(0.0);
     if (!f) return 0;
     /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
@@ -1462,8 +1463,9 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     int i, k, x, y, made = 0;
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
      * rows cost fewer cache lines than the lists of several bins (the 21
-     * bins at 1 texel: twice the misses), so one bin only */
-    if (!p->inner || (p->direct && s->n > 1)) return 0;   /* inner: no full period either */
+     * bins at 1 texel: twice the misses), so one bin only, and none where
+     * those rows are read already */
+    if (!p->inner || (p->direct && (s->n > 1 || p->mapped))) return 0;   /* inner: no full period either */
     for (i = 0; i < s->n; ++i) {
         texels += mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         if (texels > (p->direct ? MF__IBM_FEW_TEXELS : MF__IBM_FEW_TEXELS * (unsigned int)s->n)) return 0;
@@ -1876,7 +1878,10 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
     /* a footprint of a few texels: the bins of its texels */
-    if (p.mode == MF__IBM_EXACT && p.few) { if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0); }
+    if (p.mode == MF__IBM_EXACT && p.few) {
+        if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0);
+        p.mapped = 1;
+    }
     else {   /* those bins; for a footprint of many texels only those that
          * face wo (and wi when only f is wanted), which spares their
          * traversal (small ones are checked after their weights) */
