@@ -1848,6 +1848,9 @@ MF_INLINE mf_real mf__ibm_flake_lambda(mf_real alpha, mf_real s2, mf_real c)
     return mf_beckmann_lambda(alpha, alpha, mf_vec3_make(MF_SQRT(s2), MF_R(0.0), c));
 }
 
+/* mean normals the BRDF keeps from its facing test: the 21 bins of the
+ * default radius, without a window-sized array on a GPU thread's stack */
+#define MF__IBM_KEPT_NORMALS 32
 /* The lobes of the bins around beta(h): for each non-empty bin j of the
  * neighbourhood with wo.t_j > 0, the texel contribution C (Eq. 3.29, no
  * Fresnel) and the sampling density of wi through j,
@@ -1865,7 +1868,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     mf_vec3 h;
     int r = ibm->radius, b = ibm->res, cx, cy, i, small, nb = 0, known = 0;
     int near[MF_IBM_MAX_WINDOW], ndx[MF_IBM_MAX_WINDOW], ndy[MF_IBM_MAX_WINDOW];
-    mf_vec3 tn[MF_IBM_MAX_WINDOW];   /* the set's mean normals, where the facing test read them (known) */
+    mf_vec3 tn[MF__IBM_KEPT_NORMALS];   /* the set's first mean normals, where the facing test read them (known) */
     h = mf_normalize(mf_add(wo, wi));
     if (!(h.z > MF_R(0.0))) return MF_R(0.0);
     cx = mf__ibm_cell(h.x, b); cy = mf__ibm_cell(h.y, b);
@@ -1892,7 +1895,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
                 mf_vec3 t = mf_ibm_bin_normal(ibm, near[i]);
                 if (!(mf_dot(wo, t) > MF_R(0.0)) || !(mf_dot(h, t) > MF_R(0.0))) continue;
                 if (!pdf && !(mf_dot(wi, t) > MF_R(0.0))) continue;
-                tn[s.n] = t;
+                if (s.n < MF__IBM_KEPT_NORMALS) tn[s.n] = t;
             }
             mf__ibm_set_add(&s, ndx[i], ndy[i], near[i]);
         }
@@ -1900,13 +1903,13 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     if (s.n == 0) return MF_R(0.0);
     /* the bins' mean normals, read below unless the facing test has: their
      * loads start now, under the weights' work */
-    if (!known) for (i = 0; i < s.n; ++i) MF__PREFETCH(ibm->data + ibm->mean_at + (size_t)s.bin[i]);
+    for (i = known ? MF__IBM_KEPT_NORMALS : 0; i < s.n; ++i) MF__PREFETCH(ibm->data + ibm->mean_at + (size_t)s.bin[i]);
     mf__ibm_weights(ibm, &p, &s);
     for (i = 0; i < s.n; ++i) {
         mf_vec3 t, xh, xo;
         mf_real co, ci, ch, d, lo;
         if (!(s.w[i] > MF_R(0.0))) continue;
-        t = known ? tn[i] : mf_ibm_bin_normal(ibm, s.bin[i]);
+        t = known && i < MF__IBM_KEPT_NORMALS ? tn[i] : mf_ibm_bin_normal(ibm, s.bin[i]);
         co = mf_dot(wo, t); ci = mf_dot(wi, t); ch = mf_dot(h, t);
         if (!(co > MF_R(0.0)) || !(ch > MF_R(0.0))) continue;
         xh = mf_cross(h, t); xo = mf_cross(wo, t);
