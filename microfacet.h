@@ -6014,7 +6014,6 @@ typedef struct mf__ibm_fp {
     int bx0, by0, bx1, by1;    /* direct: texels [bx0, bx1) x [by0, by1) (unwrapped) hold A */
     int rect;                  /* axis-aligned: every piece is a rectangle */
     int inner;                 /* every corner in the first period: A is its only piece, unclipped */
-    int mapped;                /* direct: its box's bin-map rows were read (the set was found there) */
     int row0, row1;            /* period rows touched */
     mf_real x[4], y[4];        /* corners in texels, counterclockwise, center in the first period */
     mf_real cx, cy, ax, ay, bx, by;   /* center and edges in texels */
@@ -6129,7 +6128,7 @@ MF_INLINE int mf__ibm_footprint_shape(const mf_ibm *ibm, const mf_footprint *f, 
     mf_real W = (mf_real)ibm->width, H = (mf_real)ibm->height, cross, ex, ey;
     int edges_ok;
     p->mode = MF__IBM_NONE;
-    p->direct = p->few = p->tiny = p->inner = p->mapped = 0;
+    p->direct = p->few = p->tiny = p->inner = 0;
     p->full = MF_R(0.0);
     if (!f) return 0;
     /* bits, not comparisons, so that -ffast-math keeps NaN from the indices */
@@ -6471,6 +6470,7 @@ MF_INLINE mf_real mf__ibm_box_area(const mf__ibm_piece *pc, int x0, int y0, int 
  * |dx|, |dy| <= r, that are listed; slot maps a window cell to its list entry. */
 typedef struct mf__ibm_set {
     int cx, cy, r, side, n;
+    int mapped;                      /* found in the bin map's rows (mf__ibm_direct_any) */
     int bin[MF_IBM_MAX_WINDOW];
     short slot[MF_IBM_MAX_WINDOW];
     mf_real w[MF_IBM_MAX_WINDOW];    /* accumulated area, then weight */
@@ -6479,7 +6479,7 @@ typedef struct mf__ibm_set {
 MF_INLINE void mf__ibm_set_init(mf__ibm_set *s, int cx, int cy, int r)
 {
     int i;
-    s->cx = cx; s->cy = cy; s->r = r; s->side = 2 * r + 1; s->n = 0;
+    s->cx = cx; s->cy = cy; s->r = r; s->side = 2 * r + 1; s->n = s->mapped = 0;
     for (i = 0; i < s->side * s->side; ++i) s->slot[i] = -1;
 }
 
@@ -6590,6 +6590,7 @@ MF_INLINE int mf__ibm_direct_any(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm
             if (s->slot[mf__ibm_set_cell(s, dx, dy)] < 0) mf__ibm_set_add(s, dx, dy, (s->cx + dx) + ibm->res * (s->cy + dy));
         }
     }
+    if (collect) s->mapped = 1;
     return collect ? s->n : 0;
 }
 
@@ -6921,7 +6922,7 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
      * rows cost fewer cache lines than the lists of several bins (the 21
      * bins at 1 texel: twice the misses), so one bin only, and none where
      * those rows are read already */
-    if (!p->inner || (p->direct && (s->n > 1 || p->mapped))) return 0;   /* inner: no full period either */
+    if (!p->inner || (p->direct && (s->n > 1 || s->mapped))) return 0;   /* inner: no full period either */
     for (i = 0; i < s->n; ++i) {
         texels += mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         if (texels > (p->direct ? MF__IBM_FEW_TEXELS : MF__IBM_FEW_TEXELS * (unsigned int)s->n)) return 0;
@@ -7337,10 +7338,7 @@ MF_INLINE mf_real mf__ibm_lobes(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     if (p.mode == MF__IBM_NONE) return MF_R(0.0);
     mf__ibm_set_init(&s, cx, cy, r);
     /* a footprint of a few texels: the bins of its texels */
-    if (p.mode == MF__IBM_EXACT && p.few) {
-        if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0);
-        p.mapped = 1;
-    }
+    if (p.mode == MF__IBM_EXACT && p.few) { if (!mf__ibm_direct_any(ibm, &p, &s, 1)) return MF_R(0.0); }
     else {   /* those bins; for a footprint of many texels only those that
          * face wo (and wi when only f is wanted), which spares their
          * traversal (small ones are checked after their weights) */
