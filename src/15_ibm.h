@@ -327,6 +327,42 @@ MF_INLINE mf_real mf__ibm_square_cut(const mf_real *v)
     }
 }
 
+/* |P ∩ box [X, X + W] x [Y, Y + H]| for a convex polygon P (x, y: n
+ * counterclockwise vertices, none repeated) by Green's theorem: the area is
+ * the boundary integral of u dv, u = x - X and v = y - Y. That boundary is
+ * P's edges clipped to the box (Liang-Barsky; u dv of a segment by the
+ * trapezoid rule) and the box's sides inside P, of which only the right one
+ * (u = W) adds anything: W times P's chord there, between the crossings of
+ * its lower and upper chains (the edges whose half-open x-ranges [x, x')
+ * hold W). Each crossing is its edge's own clipping parameter, so that the
+ * computed boundary closes (test_ibm: within 1e-6 of the box in float,
+ * 1e-13 in double, of the float polygon clipped in double). */
+MF_INLINE mf_real mf__ibm_green_area(const mf_real *x, const mf_real *y, int n, mf_real X, mf_real Y, mf_real W, mf_real H)
+{
+    mf_real s = MF_R(0.0), vb = MF_R(0.0), vt = MF_R(0.0);
+    int i, cb = 0, ct = 0;
+    for (i = 0; i < n; ++i) {
+        int k = i + 1 == n ? 0 : i + 1;
+        mf_real qx = x[i] - X, qk = x[k] - X, qy = y[i] - Y, dx = qk - qx, dy = y[k] - Y - qy;
+        mf_real t0 = MF_R(0.0), t1 = MF_R(1.0), r, ta, tb;
+        if (dx != MF_R(0.0)) {
+            r = MF_R(1.0) / dx; ta = -qx * r; tb = (W - qx) * r;
+            if (dx > MF_R(0.0) ? qx <= W && W < qk : qk <= W && W < qx) {   /* the chord's end on this edge */
+                mf_real v = qy + mf_clamp(tb, MF_R(0.0), MF_R(1.0)) * dy;
+                if (dx > MF_R(0.0)) { vb = v; cb = 1; }
+                else { vt = v; ct = 1; }
+            }
+            if (dy == MF_R(0.0)) continue;   /* dv = 0 */
+            t0 = mf_max(t0, mf_min(ta, tb)); t1 = mf_min(t1, mf_max(ta, tb));
+        } else if (dy == MF_R(0.0) || !(qx >= MF_R(0.0) && qx <= W)) continue;   /* a vertical edge outside */
+        r = MF_R(1.0) / dy; ta = -qy * r; tb = (H - qy) * r;
+        t0 = mf_max(t0, mf_min(ta, tb)); t1 = mf_min(t1, mf_max(ta, tb));
+        if (t1 > t0) s += dy * (t1 - t0) * (qx + MF_R(0.5) * dx * (t0 + t1));
+    }
+    if (cb && ct) s += W * mf_max(mf_clamp(vt, MF_R(0.0), H) - mf_clamp(vb, MF_R(0.0), H), MF_R(0.0));
+    return mf_clamp(s, MF_R(0.0), W * H);
+}
+
 /* bit length of v (0 for 0): one instruction where there is one, else by
  * halving (no loop over the bits) */
 MF_INLINE int mf__ibm_bitlen32(unsigned int v)
@@ -592,25 +628,6 @@ MF_INLINE int mf__ibm_clip_axis(const mf_real *xi, const mf_real *yi, int n, int
             mf_real t = di / (di - dk);
             if (axis) { xo[m] = xi[i] + t * (xi[k] - xi[i]); yo[m] = value; }
             else { xo[m] = value; yo[m] = yi[i] + t * (yi[k] - yi[i]); }
-            ++m;
-        }
-    }
-    return m;
-}
-
-/* Clips a convex polygon to a x + b y + c >= 0. */
-MF_INLINE int mf__ibm_clip_line(const mf_real *xi, const mf_real *yi, int n, mf_real a, mf_real b, mf_real c,
-                                mf_real *xo, mf_real *yo)
-{
-    int i, m = 0;
-    for (i = 0; i < n; ++i) {
-        int k = i + 1 == n ? 0 : i + 1;
-        mf_real di = a * xi[i] + b * yi[i] + c, dk = a * xi[k] + b * yi[k] + c;
-        if (di >= MF_R(0.0)) { xo[m] = xi[i]; yo[m] = yi[i]; ++m; }
-        if ((di >= MF_R(0.0)) != (dk >= MF_R(0.0))) {
-            mf_real t = di / (di - dk);
-            xo[m] = xi[i] + t * (xi[k] - xi[i]);
-            yo[m] = yi[i] + t * (yi[k] - yi[i]);
             ++m;
         }
     }
@@ -953,16 +970,15 @@ MF_INLINE int mf__ibm_classify(const mf__ibm_piece *pc, int x0, int y0, int x1, 
     return in;
 }
 
-/* |piece ∩ box| for the box [X, X + W] x [Y, Y + H] (relative coordinates):
- * W H inside, 0 outside, otherwise the box clipped by the cutting edges
- * (Sutherland-Hodgman) and its shoelace area, in coordinates relative to the
- * box's corner; elo, ehi: the least and largest of ea x + eb y over the box
- * less its corner, per edge. One cutting edge: closed form. */
+/* |piece ∩ box [X, X + W] x [Y, Y + H]| (relative coordinates): W H inside,
+ * 0 outside (elo, ehi: the least and largest of ea x + eb y over the box
+ * less its corner, per edge); one cutting edge in closed form, more by
+ * mf__ibm_green_area. */
 MF_INLINE mf_real mf__ibm_rect_area(const mf__ibm_piece *pc, mf_real X, mf_real Y, mf_real W, mf_real H,
                                     const mf_real *elo, const mf_real *ehi)
 {
-    mf_real xa[16], ya[16], xb[16], yb[16], cv[12], *px = xa, *py = ya, *qx = xb, *qy = yb, *t;
-    int i, cut[12], nc = 0, n = 4;
+    mf_real cv = MF_R(0.0);
+    int i, cut = 0, nc = 0;
     if (pc->rect) {
         mf_real w = mf_min(X + W, pc->rx1) - mf_max(X, pc->rx0);
         mf_real h = mf_min(Y + H, pc->ry1) - mf_max(Y, pc->ry0);
@@ -971,23 +987,16 @@ MF_INLINE mf_real mf__ibm_rect_area(const mf__ibm_piece *pc, mf_real X, mf_real 
     for (i = 0; i < pc->n; ++i) {
         mf_real v = pc->ea[i] * X + pc->eb[i] * Y + pc->ec[i];
         if (v + ehi[i] <= MF_R(0.0)) return MF_R(0.0);
-        if (v + elo[i] < MF_R(0.0)) { cut[nc] = i; cv[nc] = v; ++nc; }
+        if (v + elo[i] < MF_R(0.0)) { cut = i; cv = v; ++nc; }
     }
     if (nc == 0) return W * H;
     if (nc == 1) {   /* one edge cuts the box (most boundary texels): closed form */
-        mf_real a = pc->ea[cut[0]] * W, b = pc->eb[cut[0]] * H, v[4], r;
-        v[0] = cv[0]; v[1] = cv[0] + a; v[2] = cv[0] + a + b; v[3] = cv[0] + b;
+        mf_real a = pc->ea[cut] * W, b = pc->eb[cut] * H, v[4], r;
+        v[0] = cv; v[1] = cv + a; v[2] = cv + a + b; v[3] = cv + b;
         r = mf__ibm_square_cut(v);   /* the fraction of the box: the map to the unit square is affine */
         if (r >= MF_R(0.0)) return r * W * H;
     }
-    xa[0] = MF_R(0.0); ya[0] = MF_R(0.0); xa[1] = W; ya[1] = MF_R(0.0);
-    xa[2] = W; ya[2] = H; xa[3] = MF_R(0.0); ya[3] = H;
-    for (i = 0; i < nc && n >= 3; ++i) {   /* the two buffers in turn, nothing copied */
-        n = mf__ibm_clip_line(px, py, n, pc->ea[cut[i]], pc->eb[cut[i]], cv[i], qx, qy);
-        t = px; px = qx; qx = t;
-        t = py; py = qy; qy = t;
-    }
-    return n >= 3 ? mf_max(mf__ibm_shoelace(px, py, n, MF_R(0.0), MF_R(0.0)), MF_R(0.0)) : MF_R(0.0);
+    return mf__ibm_green_area(pc->x, pc->y, pc->n, X, Y, W, H);
 }
 
 /* |piece ∩ texel (tx, ty)| in texels (mf__ibm_rect_area of the unit square) */

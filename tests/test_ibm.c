@@ -1184,9 +1184,103 @@ static void test_square_cut(void)
     MFT_CHECK(bad == 0 && err < MFT_TOL(1e-13, 3e-6), msg);
 }
 
+/* |P ∩ box| by Green's theorem (mf__ibm_green_area, mf__ibm_rect_area's
+ * general case) against P clipped to the box in double, for float
+ * parallelograms: random, on a quarter-texel grid (corners and edges on
+ * texel lines), with vertical or horizontal edges, and cut by the lines x =
+ * c and y = c (as a period's border cuts a footprint: crossings at exactly
+ * c); boxes of 1 to 4 texels a side over and around each. */
+static int clip_poly_d(double *x, double *y, int n, int axis, double c, double sgn)
+{
+    double xo[24], yo[24];
+    int i, m = 0;
+    for (i = 0; i < n; ++i) {
+        int k = (i + 1) % n;
+        double di = sgn * ((axis ? y[i] : x[i]) - c), dk = sgn * ((axis ? y[k] : x[k]) - c);
+        if (di >= 0) { xo[m] = x[i]; yo[m] = y[i]; ++m; }
+        if ((di >= 0) != (dk >= 0)) {
+            double t = di / (di - dk);
+            xo[m] = axis ? x[i] + t * (x[k] - x[i]) : c;
+            yo[m] = axis ? c : y[i] + t * (y[k] - y[i]);
+            ++m;
+        }
+    }
+    for (i = 0; i < m; ++i) { x[i] = xo[i]; y[i] = yo[i]; }
+    return m;
+}
+static void test_green_area(void)
+{
+    mft_rng r;
+    double err = 0;
+    long boxes = 0;
+    int t, cut = 0, pieces = 0;
+    char msg[200];
+    mft_seed(&r, 91);
+    for (t = 0; t < 40000; ++t) {
+        double px[24], py[24], sc = t % 3 == 0 ? 1.0 : t % 3 == 1 ? 4.0 : 0.4, cx, cy, ax, ay, bx, by, lx = 1e9, hx = -1e9, ly = 1e9, hy = -1e9;
+        mf_real fx[24], fy[24];
+        int n = 4, i, k, x, y;
+        cx = 8 + 4 * mft_u01(&r); cy = 8 + 4 * mft_u01(&r);
+        ax = sc * (2 * mft_u01(&r) - 1); ay = sc * (2 * mft_u01(&r) - 1);
+        bx = sc * (2 * mft_u01(&r) - 1); by = sc * (2 * mft_u01(&r) - 1);
+        if (t % 5 == 0) {   /* corners on a quarter-texel grid */
+            cx = 8 + floor(16 * mft_u01(&r)) / 4; cy = 8 + floor(16 * mft_u01(&r)) / 4;
+            ax = (floor(17 * mft_u01(&r)) - 8) / 4; ay = (floor(17 * mft_u01(&r)) - 8) / 4;
+            bx = (floor(17 * mft_u01(&r)) - 8) / 4; by = (floor(17 * mft_u01(&r)) - 8) / 4;
+        }
+        if (t % 7 == 0) ax = 0;    /* a vertical edge */
+        if (t % 11 == 0) ay = 0;   /* a horizontal edge */
+        if (ax * by - ay * bx < 0) { ax = -ax; ay = -ay; }   /* counterclockwise */
+        if (!(fabs(ax * by - ay * bx) > 1e-3)) continue;
+        px[0] = cx - 0.5 * ax - 0.5 * bx; py[0] = cy - 0.5 * ay - 0.5 * by;
+        px[1] = cx + 0.5 * ax - 0.5 * bx; py[1] = cy + 0.5 * ay - 0.5 * by;
+        px[2] = cx + 0.5 * ax + 0.5 * bx; py[2] = cy + 0.5 * ay + 0.5 * by;
+        px[3] = cx - 0.5 * ax + 0.5 * bx; py[3] = cy - 0.5 * ay + 0.5 * by;
+        for (i = 0; i < 4; ++i) { px[i] = (double)(mf_real)px[i]; py[i] = (double)(mf_real)py[i]; }
+        if (t % 4 == 3) {   /* cut by a period's border: x >= c or y <= c, c an integer */
+            n = clip_poly_d(px, py, n, 0, floor(cx), 1.0);
+            n = clip_poly_d(px, py, n, 1, ceil(cy), -1.0);
+            ++cut;
+        }
+        for (i = k = 0; i < n; ++i) {   /* float vertices, none repeated */
+            mf_real vx = (mf_real)px[i], vy = (mf_real)py[i];
+            if (k > 0 && vx == fx[k - 1] && vy == fy[k - 1]) continue;
+            fx[k] = vx; fy[k] = vy; ++k;
+        }
+        while (k > 1 && fx[k - 1] == fx[0] && fy[k - 1] == fy[0]) --k;
+        if (k < 3) continue;
+        n = k;
+        ++pieces;
+        for (i = 0; i < n; ++i) {
+            px[i] = (double)fx[i]; py[i] = (double)fy[i];
+            lx = fmin(lx, px[i]); hx = fmax(hx, px[i]); ly = fmin(ly, py[i]); hy = fmax(hy, py[i]);
+        }
+        for (y = (int)floor(ly) - 1; y <= (int)ceil(hy); ++y)
+            for (x = (int)floor(lx) - 1; x <= (int)ceil(hx); ++x) {
+                int W = 1 + (x + y + t) % 4, H = 1 + (x + 2 * y + t) % 3;
+                double bxs[24], bys[24], want = 0, got;
+                int m = n;
+                for (i = 0; i < n; ++i) { bxs[i] = px[i]; bys[i] = py[i]; }
+                m = clip_poly_d(bxs, bys, m, 0, x, 1.0);
+                m = clip_poly_d(bxs, bys, m, 0, x + W, -1.0);
+                m = clip_poly_d(bxs, bys, m, 1, y, 1.0);
+                m = clip_poly_d(bxs, bys, m, 1, y + H, -1.0);
+                for (i = 0; i < m && m >= 3; ++i) want += 0.5 * (bxs[i] * bys[(i + 1) % m] - bxs[(i + 1) % m] * bys[i]);
+                got = (double)mf__ibm_green_area(fx, fy, n, (mf_real)x, (mf_real)y, (mf_real)W, (mf_real)H);
+                err = fmax(err, fabs(got - want) / (W * H));
+                ++boxes;
+            }
+    }
+    snprintf(msg, sizeof msg, "Green's-theorem area of a polygon in a box = the polygon clipped in double (%d polygons, %d cut by a border, %ld boxes, max err %.2e of the box)",
+             pieces, cut, boxes, err);
+    if (mft_verbose) printf("     %s\n", msg);
+    MFT_CHECK(pieces > 30000 && cut > 7000 && err < MFT_TOL(1e-13, 1e-6), msg);
+}
+
 void test_ibm(void)
 {
     test_square_cut();
+    test_green_area();
     test_slivers();
     test_build_errors();
     test_structure();
