@@ -223,13 +223,14 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * whose texels all lie in the bin (flat regions) counts its box's area in
  * the footprint without descending. Footprints of a few texels get their
  * texels' areas row by row (one clip per row and per texel side); a texel
- * (or node) cut by one footprint edge gets its area in closed form. Bins
- * that hold at most 48 texels each on average, for a footprint inside one
- * period, take their texels from their lists without a traversal: a
- * texel's center in the footprint's coordinates decides it wholly inside or
- * outside, and only texels that the boundary may cut are clipped (one bin
- * of at most 48 only where the footprint's box would be visited; a single
- * bin of at most 48 also skips the early exits above). */
+ * (or node) cut by one footprint edge gets its area in closed form, by
+ * more edges by Green's theorem. Bins that hold at most 48 texels each on
+ * average, for a footprint whose texel box is narrower than the period
+ * (across its border too), take their texels from their lists without a
+ * traversal: a texel's center in the footprint's coordinates decides it
+ * wholly inside or outside, and only texels that the boundary may cut are
+ * clipped (one bin of at most 48 only where the footprint's box would be
+ * visited; a single bin of at most 48 also skips the early exits above). */
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
 /* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
@@ -878,11 +879,13 @@ MF_INLINE int mf__ibm_piece_edges(const mf_ibm *ibm, const mf__ibm_fp *p, int ro
     return 1;
 }
 
-/* mf__ibm_piece_edges for a footprint inside the period (inner), A itself:
- * a parallelogram, whose opposite edges share their normal, without the
- * clipping and the repeated-vertex pass; 0 where an edge rounds to zero
- * length or A's box holds no texel (then mf__ibm_piece_edges decides). */
-MF_INLINE int mf__ibm_piece_inner(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_piece *pc)
+/* A itself as a piece, unclipped: for a footprint inside the period
+ * (inner), mf__ibm_piece_edges without the clipping and the repeated-vertex
+ * pass (a parallelogram's opposite edges share their normal); for one
+ * across the period's border, the areas of its texels' images beyond it
+ * (mf__ibm_weights_few). 0 where an edge rounds to zero length or A's box
+ * holds no texel. */
+MF_INLINE int mf__ibm_piece_inner(const mf__ibm_fp *p, mf__ibm_piece *pc)
 {
     mf_real lx = mf_min(mf_min(p->x[0], p->x[1]), mf_min(p->x[2], p->x[3]));
     mf_real hx = mf_max(mf_max(p->x[0], p->x[1]), mf_max(p->x[2], p->x[3]));
@@ -892,8 +895,7 @@ MF_INLINE int mf__ibm_piece_inner(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ib
     int i;
     pc->ox = pc->bx0 = mf__ibm_ifloor(lx); pc->oy = pc->by0 = mf__ibm_ifloor(ly);
     pc->bx1 = mf__ibm_iceil(hx); pc->by1 = mf__ibm_iceil(hy);
-    if (pc->bx0 < 0 || pc->by0 < 0 || pc->bx1 > ibm->width || pc->by1 > ibm->height || pc->bx1 <= pc->bx0 || pc->by1 <= pc->by0)
-        return 0;
+    if (pc->bx1 <= pc->bx0 || pc->by1 <= pc->by0) return 0;
     for (i = 0; i < 4; ++i) { pc->x[i] = p->x[i] - (mf_real)pc->ox; pc->y[i] = p->y[i] - (mf_real)pc->oy; }
     for (i = 0; i < 2; ++i) {   /* edges 0 -> 1 and 1 -> 2; 2 -> 3 and 3 -> 0 point back */
         mf_real ea = pc->y[i] - pc->y[i + 1], eb = pc->x[i + 1] - pc->x[i], l = MF_SQRT(ea * ea + eb * eb);
@@ -1450,7 +1452,9 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
 }
 
 /* The weights of a set of bins that hold few texels, for a footprint
- * inside one period (its only piece, A itself): at most 48 per bin of the
+ * whose texel box is narrower than the period both ways (A itself, which
+ * may cross the period's border: each texel of the map has one image in
+ * that box, found by a shift of one period): at most 48 per bin of the
  * set (the 21 bins: 1008; measured against 32, 64 and limits of 1024 and
  * 4096 in all), one bin of at most 48 for a footprint of the direct path.
  * Each texel of the bins by its position, no traversal and no bin-map
@@ -1467,15 +1471,15 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
 static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
     mf__ibm_piece pc;
-    mf__ibm_cbox bb;
+    mf__ibm_cbox bb[4];
     mf_real cr = p->ax * p->by - p->ay * p->bx, inv, rs, rt, err, tot = p->area, frac;
     unsigned int texels = 0u, n, base, tab, q, cnt;
-    int i, k, x, y, made = 0;
+    int i, j, k, x, y, made = 0, nb = 1, sx[4], sy[4], W = ibm->width, H = ibm->height, x0, y0, x1, y1;
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
      * rows cost fewer cache lines than the lists of several bins (the 21
      * bins at 1 texel: twice the misses), so one bin only, and none where
      * those rows are read already */
-    if (!p->inner || (p->direct && (s->n > 1 || s->mapped))) return 0;   /* inner: no full period either */
+    if (p->direct && (s->n > 1 || s->mapped)) return 0;
     for (i = 0; i < s->n; ++i) {
         texels += mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         if (texels > (p->direct ? MF__IBM_FEW_TEXELS : MF__IBM_FEW_TEXELS * (unsigned int)s->n)) return 0;
@@ -1489,37 +1493,65 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     rs = (MF_R(0.5) * inv + err) * (MF_FABS(p->bx) + MF_FABS(p->by));
     rt = (MF_R(0.5) * inv + err) * (MF_FABS(p->ax) + MF_FABS(p->ay));
     if (cr < MF_R(0.0)) inv = -inv;
-    /* A's texel box as Morton-code bounds: most texels fail it, undecoded */
-    bb = mf__ibm_code_box(ibm, mf__ibm_ifloor(p->cx - p->ex), mf__ibm_ifloor(p->cy - p->ey), mf__ibm_iceil(p->cx + p->ex) - 1,
-                          mf__ibm_iceil(p->cy + p->ey) - 1);
+    /* A's texel box as Morton-code bounds (most texels fail it, undecoded):
+     * across the period's border, its parts in the period (up to 4: per
+     * axis [x0 + W, W) and [0, x1] or [x0, W) and [0, x1 - W]), each with
+     * the shift of one period that takes its texels to their images */
+    x0 = mf__ibm_ifloor(p->cx - p->ex); y0 = mf__ibm_ifloor(p->cy - p->ey);
+    x1 = mf__ibm_iceil(p->cx + p->ex) - 1; y1 = mf__ibm_iceil(p->cy + p->ey) - 1;
+    sx[0] = sy[0] = 0;
+    if (x0 >= 0 && x1 < W && y0 >= 0 && y1 < H) bb[0] = mf__ibm_code_box(ibm, x0, y0, x1, y1);   /* inside the period */
+    else if (x1 - x0 + 1 >= W || y1 - y0 + 1 >= H) return 0;   /* as wide as the period: full periods may lie in A */
+    else for (k = nb = 0; k < 4; ++k) {
+        int u0 = k & 1 ? 0 : x0, u1 = k & 1 ? x1 - W : x1, v0 = k & 2 ? 0 : y0, v1 = k & 2 ? y1 - H : y1;
+        if (!(k & 1) && x0 < 0) { u0 = x0 + W; u1 = W - 1; }
+        else if (!(k & 1) && x1 >= W) u1 = W - 1;
+        else if (k & 1 && x0 < 0) { u0 = 0; u1 = x1; }
+        if (!(k & 2) && y0 < 0) { v0 = y0 + H; v1 = H - 1; }
+        else if (!(k & 2) && y1 >= H) v1 = H - 1;
+        else if (k & 2 && y0 < 0) { v0 = 0; v1 = y1; }
+        if (u1 < u0 || v1 < v0) continue;
+        bb[nb] = mf__ibm_code_box(ibm, u0, v0, u1, v1);
+        sx[nb] = u0 > x1 ? -W : u1 < x0 ? W : 0;   /* the part's image in A's box */
+        sy[nb] = v0 > y1 ? -H : v1 < y0 ? H : 0;
+        ++nb;
+    }
     for (i = 0; i < s->n; ++i) {
         n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
         cnt = 0u; frac = MF_R(0.0);
-        /* the box's codes lie in [x0 | y0, x1 | y1] (each axis's bits
-         * compare like the axis): the sorted list from its lower bound */
-        q = n > 8u ? mf__ibm_lower(ibm->data + ibm->pos_at, ibm->list_bits, base, 0u, n, bb.x0 | bb.y0) : 0u;
-        for (; q < n; ++q) {
-            unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & bb.xm, my = c & bb.ym;
-            mf_real dx, dy, as, at, a;
-            if (c > (bb.x1 | bb.y1)) break;
-            if (mx < bb.x0 || mx > bb.x1 || my < bb.y0 || my > bb.y1) continue;
-            mf__ibm_unmorton_masked(mx, my, bb.lom, bb.kmin, &x, &y);
-            dx = (mf_real)x + MF_R(0.5) - p->cx; dy = (mf_real)y + MF_R(0.5) - p->cy;
-            as = MF_FABS((dx * p->by - dy * p->bx) * inv);
-            at = MF_FABS((p->ax * dy - p->ay * dx) * inv);
-            if (as >= MF_R(0.5) + rs || at >= MF_R(0.5) + rt) continue;       /* wholly outside */
-            if (as + rs <= MF_R(0.5) && at + rt <= MF_R(0.5)) { ++cnt; continue; }   /* wholly inside */
-            if (!made) {
-                if (!mf__ibm_piece_inner(ibm, p, &pc) && !mf__ibm_piece_edges(ibm, p, 0, 0, p->x, p->y, 4, &pc)) {   /* no area */
-                    for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
-                    return 1;
+        for (j = 0; j < nb; ++j) {
+            const mf__ibm_cbox *b = bb + j;
+            mf_real ox = p->cx, oy = p->cy;   /* A's center relative to the part */
+            if (j > 0 || nb > 1) { ox -= (mf_real)sx[j]; oy -= (mf_real)sy[j]; }
+            /* the part's codes lie in [x0 | y0, x1 | y1] (each axis's bits
+             * compare like the axis): the sorted list from its lower bound */
+            q = n > 8u ? mf__ibm_lower(ibm->data + ibm->pos_at, ibm->list_bits, base, 0u, n, b->x0 | b->y0) : 0u;
+            for (; q < n; ++q) {
+                unsigned int c = mf__ibm_get(ibm->data + ibm->pos_at, base + q, ibm->list_bits), mx = c & b->xm, my = c & b->ym;
+                mf_real dx, dy, as, at, a;
+                if (c > (b->x1 | b->y1)) break;
+                if (mx < b->x0 || mx > b->x1 || my < b->y0 || my > b->y1) continue;
+                mf__ibm_unmorton_masked(mx, my, b->lom, b->kmin, &x, &y);
+                dx = (mf_real)x + MF_R(0.5) - ox; dy = (mf_real)y + MF_R(0.5) - oy;
+                as = MF_FABS((dx * p->by - dy * p->bx) * inv);
+                at = MF_FABS((p->ax * dy - p->ay * dx) * inv);
+                if (as >= MF_R(0.5) + rs || at >= MF_R(0.5) + rt) continue;       /* wholly outside */
+                if (as + rs <= MF_R(0.5) && at + rt <= MF_R(0.5)) { ++cnt; continue; }   /* wholly inside */
+                if (!made) {
+                    if (!mf__ibm_piece_inner(p, &pc)) {
+                        if (!p->inner) return 0;   /* the caller's pieces decide */
+                        if (!mf__ibm_piece_edges(ibm, p, 0, 0, p->x, p->y, 4, &pc)) {   /* no area */
+                            for (i = 0; i < s->n; ++i) s->w[i] = MF_R(0.0);
+                            return 1;
+                        }
+                    }
+                    tot = mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));   /* as mf__ibm_weights takes |A| */
+                    made = 1;
                 }
-                tot = mf__ibm_shoelace(pc.x, pc.y, pc.n, MF_R(0.0), MF_R(0.0));   /* as mf__ibm_weights takes |A| */
-                made = 1;
+                a = mf__ibm_texel_area(&pc, x + sx[j], y + sy[j]);
+                if (a >= MF_R(1.0)) ++cnt;
+                else frac += a;
             }
-            a = mf__ibm_texel_area(&pc, x, y);
-            if (a >= MF_R(1.0)) ++cnt;
-            else frac += a;
         }
         s->w[i] = mf_clamp(((mf_real)cnt + frac) / tot, MF_R(0.0), MF_R(1.0));
     }
@@ -1801,13 +1833,13 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
-    {   /* a bin of few texels and a footprint inside the period: its texels
+    {   /* a bin of few texels and a footprint narrower than the period: its texels
          * against A at once (mf__ibm_weights_few), no early exits needed */
         unsigned int base, tab;
         int k;
         if (mf__ibm_bin_info(ibm, bin, &base, &tab, &k) <= MF__IBM_FEW_TEXELS) {
             shaped = mf__ibm_footprint_shape(ibm, f, &p);
-            if (shaped && p.inner && mf__ibm_weights_few(ibm, &p, &s)) return s.w[0];
+            if (shaped && mf__ibm_weights_few(ibm, &p, &s)) return s.w[0];
         }
     }
     {
