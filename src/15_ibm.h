@@ -452,6 +452,25 @@ MF_INLINE unsigned int mf__ibm_spread(unsigned int x)
     x = (x | (x << 2)) & 0x33333333u;
     return (x | (x << 1)) & 0x55555555u;
 }
+/* mf__ibm_spread of a and of b: at once in one 64-bit word where packed
+ * fields are read as such (a in its upper half; mf__ibm_code_box) */
+MF_INLINE void mf__ibm_spread2(unsigned int a, unsigned int b, unsigned int *sa, unsigned int *sb)
+{
+#ifdef MF__IBM_GET64
+#define MF__IBM_TWICE2(m) (((size_t)(m) << 32) | (size_t)(m))   /* no long long literal: C++98 */
+    size_t t = ((size_t)(a & 0xffffu) << 32) | (size_t)(b & 0xffffu);
+    t = (t | (t << 8)) & MF__IBM_TWICE2(0x00ff00ffu);
+    t = (t | (t << 4)) & MF__IBM_TWICE2(0x0f0f0f0fu);
+    t = (t | (t << 2)) & MF__IBM_TWICE2(0x33333333u);
+    t = (t | (t << 1)) & MF__IBM_TWICE2(0x55555555u);
+#undef MF__IBM_TWICE2
+    *sa = (unsigned int)(t >> 32);
+    *sb = (unsigned int)t;
+#else
+    *sa = mf__ibm_spread(a);
+    *sb = mf__ibm_spread(b);
+#endif
+}
 MF_INLINE unsigned int mf__ibm_compact(unsigned int x)
 {
     x &= 0x55555555u;
@@ -1211,10 +1230,11 @@ MF_INLINE mf__ibm_cbox mf__ibm_code_box(const mf_ibm *ibm, int x0, int y0, int x
     b.lom = lo; b.kmin = k;
     b.x0 = b.y0 = 1u; b.x1 = b.y1 = 0u;
     if (x1 < x0 || y1 < y0) return b;
-#define MF__IBM_AXIS(v, sh, longer) ((mf__ibm_spread((unsigned int)(v) & m) << (sh)) | ((longer) ? ((unsigned int)(v) >> k) << (2 * k) : 0u))
-    b.x0 = MF__IBM_AXIS(x0, 1, kx > ky); b.x1 = MF__IBM_AXIS(x1, 1, kx > ky);
-    b.y0 = MF__IBM_AXIS(y0, 0, ky > kx); b.y1 = MF__IBM_AXIS(y1, 0, ky > kx);
-#undef MF__IBM_AXIS
+    mf__ibm_spread2((unsigned int)x0 & m, (unsigned int)x1 & m, &b.x0, &b.x1);
+    mf__ibm_spread2((unsigned int)y0 & m, (unsigned int)y1 & m, &b.y0, &b.y1);
+    b.x0 <<= 1; b.x1 <<= 1;
+    if (kx > ky) { b.x0 |= ((unsigned int)x0 >> k) << (2 * k); b.x1 |= ((unsigned int)x1 >> k) << (2 * k); }
+    if (ky > kx) { b.y0 |= ((unsigned int)y0 >> k) << (2 * k); b.y1 |= ((unsigned int)y1 >> k) << (2 * k); }
     return b;
 }
 
