@@ -225,8 +225,8 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * texels' areas row by row (one clip per row and per texel side); a texel
  * (or node) cut by one footprint edge gets its area in closed form, by
  * more edges by Green's theorem. Bins that hold at most 48 texels each on
- * average, for a footprint whose texel box is narrower than the period
- * (across its border too), take their texels from their lists without a
+ * average, for a footprint whose texel box meets at most 3 periods each
+ * way (across the border too), take their texels from their lists without a
  * traversal: a texel's center in the footprint's coordinates decides it
  * wholly inside or outside, and only texels that the boundary may cut are
  * clipped (one bin of at most 48 only where the footprint's box would be
@@ -1472,9 +1472,9 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
 }
 
 /* The weights of a set of bins that hold few texels, for a footprint
- * whose texel box is narrower than the period both ways (A itself, which
- * may cross the period's border: each texel of the map has one image in
- * that box, found by a shift of one period): at most 48 per bin of the
+ * whose texel box meets at most 3 periods each way (A itself, across the
+ * period's border too: a texel's images in that box, found by shifts of
+ * whole periods; whole periods inside A count through them): at most 48 per bin of the
  * set (the 21 bins: 1008; measured against 32, 64 and limits of 1024 and
  * 4096 in all), one bin of at most 48 for a footprint of the direct path.
  * Each texel of the bins by its position, no traversal and no bin-map
@@ -1488,13 +1488,15 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * decides a texel near the boundary. 0 where the path does not apply (the
  * caller goes on). */
 #define MF__IBM_FEW_TEXELS 48u
+#define MF__IBM_FEW_PERIODS 3   /* periods a footprint's box may meet each way */
 static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
     mf__ibm_piece pc;
-    mf__ibm_cbox bb[4];
+    mf__ibm_cbox bb[MF__IBM_FEW_PERIODS * MF__IBM_FEW_PERIODS];
     mf_real cr = p->ax * p->by - p->ay * p->bx, inv, rs, rt, err, tot = p->area, frac;
     unsigned int texels = 0u, n, base, tab, q, cnt;
-    int i, j, k, x, y, made = 0, nb = 1, sx[4], sy[4], W = ibm->width, H = ibm->height, x0, y0, x1, y1;
+    int i, j, k, x, y, made = 0, nb = 1, W = ibm->width, H = ibm->height, x0, y0, x1, y1;
+    int sx[MF__IBM_FEW_PERIODS * MF__IBM_FEW_PERIODS], sy[MF__IBM_FEW_PERIODS * MF__IBM_FEW_PERIODS];
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
      * rows cost fewer cache lines than the lists of several bins (the 21
      * bins at 1 texel: twice the misses), so one bin only, and none where
@@ -1514,27 +1516,25 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     rt = (MF_R(0.5) * inv + err) * (MF_FABS(p->ax) + MF_FABS(p->ay));
     if (cr < MF_R(0.0)) inv = -inv;
     /* A's texel box as Morton-code bounds (most texels fail it, undecoded):
-     * across the period's border, its parts in the period (up to 4: per
-     * axis [x0 + W, W) and [0, x1] or [x0, W) and [0, x1 - W]), each with
-     * the shift of one period that takes its texels to their images */
+     * beyond the first period, its parts in each period it meets, shifted
+     * into the first (x in [c W, c W + W) by -c W), each with the shift that
+     * takes its texels back to their images in A */
     x0 = mf__ibm_ifloor(p->cx - p->ex); y0 = mf__ibm_ifloor(p->cy - p->ey);
     x1 = mf__ibm_iceil(p->cx + p->ex) - 1; y1 = mf__ibm_iceil(p->cy + p->ey) - 1;
     sx[0] = sy[0] = 0;
     if (x0 >= 0 && x1 < W && y0 >= 0 && y1 < H) bb[0] = mf__ibm_code_box(ibm, x0, y0, x1, y1);   /* inside the period */
-    else if (x1 - x0 + 1 >= W || y1 - y0 + 1 >= H) return 0;   /* as wide as the period: full periods may lie in A */
-    else for (k = nb = 0; k < 4; ++k) {
-        int u0 = k & 1 ? 0 : x0, u1 = k & 1 ? x1 - W : x1, v0 = k & 2 ? 0 : y0, v1 = k & 2 ? y1 - H : y1;
-        if (!(k & 1) && x0 < 0) { u0 = x0 + W; u1 = W - 1; }
-        else if (!(k & 1) && x1 >= W) u1 = W - 1;
-        else if (k & 1 && x0 < 0) { u0 = 0; u1 = x1; }
-        if (!(k & 2) && y0 < 0) { v0 = y0 + H; v1 = H - 1; }
-        else if (!(k & 2) && y1 >= H) v1 = H - 1;
-        else if (k & 2 && y0 < 0) { v0 = 0; v1 = y1; }
-        if (u1 < u0 || v1 < v0) continue;
-        bb[nb] = mf__ibm_code_box(ibm, u0, v0, u1, v1);
-        sx[nb] = u0 > x1 ? -W : u1 < x0 ? W : 0;   /* the part's image in A's box */
-        sy[nb] = v0 > y1 ? -H : v1 < y0 ? H : 0;
-        ++nb;
+    else {
+        /* the periods met: c0..c1 across, r0..r1 down (floor division) */
+        int c0 = x0 >= 0 ? x0 / W : -((W - 1 - x0) / W), c1 = x1 >= 0 ? x1 / W : -((W - 1 - x1) / W), c, r;
+        int r0 = y0 >= 0 ? y0 / H : -((H - 1 - y0) / H), r1 = y1 >= 0 ? y1 / H : -((H - 1 - y1) / H);
+        if (c1 - c0 >= MF__IBM_FEW_PERIODS || r1 - r0 >= MF__IBM_FEW_PERIODS) return 0;
+        for (nb = 0, r = r0; r <= r1; ++r)
+            for (c = c0; c <= c1; ++c) {
+                int u0 = c == c0 ? x0 - c * W : 0, u1 = c == c1 ? x1 - c * W : W - 1;
+                int v0 = r == r0 ? y0 - r * H : 0, v1 = r == r1 ? y1 - r * H : H - 1;
+                sx[nb] = c * W; sy[nb] = r * H;
+                bb[nb++] = mf__ibm_code_box(ibm, u0, v0, u1, v1);
+            }
     }
     for (i = 0; i < s->n; ++i) {
         n = mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
@@ -1853,7 +1853,7 @@ MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint
     if (!ibm || !ibm->data || bin < 0 || bin >= ibm->res * ibm->res) return MF_R(0.0);
     mf__ibm_set_init(&s, bin % ibm->res, bin / ibm->res, 0);
     mf__ibm_set_add(&s, 0, 0, bin);
-    {   /* a bin of few texels and a footprint narrower than the period: its texels
+    {   /* a bin of few texels and a footprint over at most 3 periods: its texels
          * against A at once (mf__ibm_weights_few), no early exits needed */
         unsigned int base, tab;
         int k;
