@@ -229,8 +229,8 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * way (across the border too), take their texels from their lists without a
  * traversal: a texel's center in the footprint's coordinates decides it
  * wholly inside or outside, and only texels that the boundary may cut are
- * clipped (one bin of at most 48 only where the footprint's box would be
- * visited; a single bin of at most 48 also skips the early exits above). */
+ * clipped (where the footprint's box would be visited, only a single bin,
+ * of at most 128, which also skips the early exits above). */
 MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
 /* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
@@ -1476,7 +1476,8 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * period's border too: a texel's images in that box, found by shifts of
  * whole periods; whole periods inside A count through them): at most 48 per bin of the
  * set (the 21 bins: 1008; measured against 32, 64 and limits of 1024 and
- * 4096 in all), one bin of at most 48 for a footprint of the direct path.
+ * 4096 in all); a single bin, at most 128, also for a footprint of the
+ * direct path.
  * Each texel of the bins by its position, no traversal and no bin-map
  * reads: A's texel box on the Morton codes first. Its center in
  * A's own coordinates, c + s a + t b with A at |s|, |t| <= 1/2, decides
@@ -1488,7 +1489,7 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * decides a texel near the boundary. 0 where the path does not apply (the
  * caller goes on). */
 #define MF__IBM_FEW_TEXELS 48u
-#define MF__IBM_FEW_ONE 128u     /* a single bin's limit (mf_ibm_bin_weight; 48: 7% more instructions) */
+#define MF__IBM_FEW_ONE 128u     /* a single bin's limit */
 #define MF__IBM_FEW_PERIODS 3   /* periods a footprint's box may meet each way */
 static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
 {
