@@ -5874,6 +5874,7 @@ MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k) { return mf
 #if !defined(__CUDA_ARCH__) && ((defined(__x86_64__) || defined(_M_X64)) || \
     (defined(__aarch64__) && !defined(__AARCH64EB__)) || defined(_M_ARM64))
 #define MF__IBM_GET64 1
+#define MF__IBM_TWICE(m) (((size_t)(m) << 32) | (size_t)(m))   /* m in both halves; no long long literal: C++98 */
 #endif
 MF_INLINE unsigned int mf__ibm_get(const unsigned int *base, size_t i, int w)
 {
@@ -5913,13 +5914,11 @@ MF_INLINE unsigned int mf__ibm_spread(unsigned int x)
 MF_INLINE void mf__ibm_spread2(unsigned int a, unsigned int b, unsigned int *sa, unsigned int *sb)
 {
 #ifdef MF__IBM_GET64
-#define MF__IBM_TWICE2(m) (((size_t)(m) << 32) | (size_t)(m))   /* no long long literal: C++98 */
     size_t t = ((size_t)(a & 0xffffu) << 32) | (size_t)(b & 0xffffu);
-    t = (t | (t << 8)) & MF__IBM_TWICE2(0x00ff00ffu);
-    t = (t | (t << 4)) & MF__IBM_TWICE2(0x0f0f0f0fu);
-    t = (t | (t << 2)) & MF__IBM_TWICE2(0x33333333u);
-    t = (t | (t << 1)) & MF__IBM_TWICE2(0x55555555u);
-#undef MF__IBM_TWICE2
+    t = (t | (t << 8)) & MF__IBM_TWICE(0x00ff00ffu);
+    t = (t | (t << 4)) & MF__IBM_TWICE(0x0f0f0f0fu);
+    t = (t | (t << 2)) & MF__IBM_TWICE(0x33333333u);
+    t = (t | (t << 1)) & MF__IBM_TWICE(0x55555555u);
     *sa = (unsigned int)(t >> 32);
     *sb = (unsigned int)t;
 #else
@@ -5964,13 +5963,11 @@ MF_INLINE void mf__ibm_unmorton_masked(unsigned int cx, unsigned int cy, unsigne
 #ifdef MF__IBM_GET64
     /* both compactions at once, x in the upper half of a 64-bit word (the
      * leaf loop's texel decode) */
-#define MF__IBM_TWICE(m) (((size_t)(m) << 32) | (size_t)(m))   /* no long long literal: C++98 */
     size_t t = ((size_t)((cx & lom) >> 1) << 32) | (size_t)(cy & lom);
     t = (t | (t >> 1)) & MF__IBM_TWICE(0x33333333u);
     t = (t | (t >> 2)) & MF__IBM_TWICE(0x0f0f0f0fu);
     t = (t | (t >> 4)) & MF__IBM_TWICE(0x00ff00ffu);
     t = (t | (t >> 8)) & MF__IBM_TWICE(0x0000ffffu);
-#undef MF__IBM_TWICE
     *x = (int)((unsigned int)(t >> 32) | ((cx & ~lom) >> kmin));
     *y = (int)((unsigned int)t | ((cy & ~lom) >> kmin));
 #else
@@ -6945,6 +6942,8 @@ MF_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc, cons
  * decides a texel near the boundary. 0 where the path does not apply (the
  * caller goes on). */
 #define MF__IBM_FEW_TEXELS 48u
+/* floor(a / b) for b > 0 */
+MF_INLINE int mf__ibm_floor_div(int a, int b) { return a >= 0 ? a / b : -((b - 1 - a) / b); }
 #define MF__IBM_FEW_ONE 128u     /* a single bin's limit */
 #define MF__IBM_FEW_PERIODS 3   /* periods a footprint's box may meet each way */
 static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_set *s)
@@ -6983,8 +6982,7 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     if (x0 >= 0 && x1 < W && y0 >= 0 && y1 < H) bb[0] = mf__ibm_code_box(ibm, x0, y0, x1, y1);   /* inside the period */
     else {
         /* the periods met: c0..c1 across, r0..r1 down (floor division) */
-        int c0 = x0 >= 0 ? x0 / W : -((W - 1 - x0) / W), c1 = x1 >= 0 ? x1 / W : -((W - 1 - x1) / W), c, r;
-        int r0 = y0 >= 0 ? y0 / H : -((H - 1 - y0) / H), r1 = y1 >= 0 ? y1 / H : -((H - 1 - y1) / H);
+        int c0 = mf__ibm_floor_div(x0, W), c1 = mf__ibm_floor_div(x1, W), r0 = mf__ibm_floor_div(y0, H), r1 = mf__ibm_floor_div(y1, H), c, r;
         if (c1 - c0 >= MF__IBM_FEW_PERIODS || r1 - r0 >= MF__IBM_FEW_PERIODS) return 0;
         for (nb = 0, r = r0; r <= r1; ++r)
             for (c = c0; c <= c1; ++c) {
@@ -6999,8 +6997,7 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
         cnt = 0u; frac = MF_R(0.0);
         for (j = 0; j < nb; ++j) {
             const mf__ibm_cbox *b = bb + j;
-            mf_real ox = p->cx, oy = p->cy;   /* A's center relative to the part */
-            if (j > 0 || nb > 1) { ox -= (mf_real)sx[j]; oy -= (mf_real)sy[j]; }
+            mf_real ox = p->cx - (mf_real)sx[j], oy = p->cy - (mf_real)sy[j];   /* A's center relative to the part */
             /* the part's codes lie in [x0 | y0, x1 | y1] (each axis's bits
              * compare like the axis): the sorted list from its lower bound */
             q = n > 8u ? mf__ibm_lower(ibm->data + ibm->pos_at, ibm->list_bits, base, 0u, n, b->x0 | b->y0) : 0u;

@@ -1189,7 +1189,8 @@ static void test_square_cut(void)
  * parallelograms: random, on a quarter-texel grid (corners and edges on
  * texel lines), with vertical or horizontal edges, and cut by the lines x =
  * c and y = c (as a period's border cuts a footprint: crossings at exactly
- * c); boxes of 1 to 4 texels a side over and around each. */
+ * c); boxes of 1 to 4 texels a side over and around each, their texels
+ * clipped in double (clip_area). */
 static int clip_poly_d(double *x, double *y, int n, int axis, double c, double sgn)
 {
     double xo[24], yo[24];
@@ -1257,15 +1258,10 @@ static void test_green_area(void)
         }
         for (y = (int)floor(ly) - 1; y <= (int)ceil(hy); ++y)
             for (x = (int)floor(lx) - 1; x <= (int)ceil(hx); ++x) {
-                int W = 1 + (x + y + t) % 4, H = 1 + (x + 2 * y + t) % 3;
-                double bxs[24], bys[24], want = 0, got;
-                int m = n;
-                for (i = 0; i < n; ++i) { bxs[i] = px[i]; bys[i] = py[i]; }
-                m = clip_poly_d(bxs, bys, m, 0, x, 1.0);
-                m = clip_poly_d(bxs, bys, m, 0, x + W, -1.0);
-                m = clip_poly_d(bxs, bys, m, 1, y, 1.0);
-                m = clip_poly_d(bxs, bys, m, 1, y + H, -1.0);
-                for (i = 0; i < m && m >= 3; ++i) want += 0.5 * (bxs[i] * bys[(i + 1) % m] - bxs[(i + 1) % m] * bys[i]);
+                int W = 1 + (x + y + t) % 4, H = 1 + (x + 2 * y + t) % 3, u, v;
+                double want = 0, got;
+                for (v = 0; v < H; ++v)   /* the box's texels, each clipped in double */
+                    for (u = 0; u < W; ++u) want += clip_area(px, py, n, x + u, y + v);
                 got = (double)mf__ibm_green_area(fx, fy, n, (mf_real)x, (mf_real)y, (mf_real)W, (mf_real)H);
                 err = fmax(err, fabs(got - want) / (W * H));
                 ++boxes;
