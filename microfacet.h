@@ -6558,13 +6558,14 @@ MF_INLINE mf_real mf__ibm_direct(const mf_ibm *ibm, const mf__ibm_piece *pc, mf_
 }
 
 /* Direct texel sum over a piece of a few texels (Eq. 5.2-5.3), row by row:
- * the piece cut to each texel row once, that band cut to each texel's
- * columns and its shoelace taken about the texel's corner (where
- * mf__ibm_texel_area clips the texel by every edge that cuts it). Returns
- * the sum of all the texels' areas (the piece's area as they add up). */
+ * the piece cut to each texel row once, that band's area in each texel's
+ * column by Green's theorem along its edges alone (mf__ibm_texel_area would
+ * clip the texel by every edge that cuts it: most texels of a piece this
+ * small hold a corner). Returns the sum of all the texels' areas (the
+ * piece's area as they add up). */
 MF_INLINE mf_real mf__ibm_direct_rows(const mf_ibm *ibm, const mf__ibm_piece *pc, mf__ibm_set *s)
 {
-    mf_real tot = MF_R(0.0), ta[12], tb[12], bx[12], by[12];
+    mf_real tot = MF_R(0.0), ta[12], tb[12], bx[12], by[12], sl[12];
     int ty;
     for (ty = pc->by0; ty < pc->by1; ++ty) {
         mf_real Y = (mf_real)(ty - pc->oy), lo, hi;
@@ -6576,13 +6577,28 @@ MF_INLINE mf_real mf__ibm_direct_rows(const mf_ibm *ibm, const mf__ibm_piece *pc
         x0 = pc->ox + mf__ibm_ifloor(lo); x1 = pc->ox + mf__ibm_iceil(hi);
         if (x0 < pc->bx0) x0 = pc->bx0;
         if (x1 > pc->bx1) x1 = pc->bx1;
+        /* each edge's slope, for its y across the texels' columns */
+        for (i = 0; i < n; ++i) {
+            int k = i + 1 == n ? 0 : i + 1;
+            mf_real d = bx[k] - bx[i];
+            sl[i] = d != MF_R(0.0) ? (by[k] - by[i]) / d : MF_R(0.0);
+        }
         for (tx = x0; tx < x1; ++tx) {
-            mf_real X = (mf_real)(tx - pc->ox), xa[12], ya[12], xb[12], yb[12], a;
-            int m = mf__ibm_clip_axis(bx, by, n, 0, X, MF_R(1.0), xa, ya), k;
-            m = mf__ibm_clip_axis(xa, ya, m, 0, X + MF_R(1.0), MF_R(-1.0), xb, yb);
-            if (m < 3) continue;
-            a = mf__ibm_shoelace(xb, yb, m, X, Y);
+            /* the band's area in column [X, X + 1] by Green's theorem,
+             * -(y - Y) dx around it: its edges within the column, each a
+             * trapezoid under its midpoint (the column's sides have dx = 0) */
+            mf_real X = (mf_real)(tx - pc->ox), a = MF_R(0.0);
+            int k;
+            for (i = 0; i < n; ++i) {
+                mf_real xa = bx[i], xb = bx[i + 1 == n ? 0 : i + 1], l, h;
+                if (xa == xb) continue;
+                l = mf_max(mf_min(xa, xb), X); h = mf_min(mf_max(xa, xb), X + MF_R(1.0));
+                if (!(h > l)) continue;
+                l = (h - l) * (by[i] - Y + MF_R(0.5) * sl[i] * (l + h - MF_R(2.0) * xa));
+                a += xa < xb ? -l : l;   /* the lower chain runs right, the upper left */
+            }
             if (!(a > MF_R(0.0))) continue;
+            a = mf_min(a, MF_R(1.0));
             tot += a;
             k = mf__ibm_set_find(ibm, s, mf__ibm_get(ibm->data + ibm->bin_at, (size_t)ty * (size_t)ibm->width + (size_t)tx, ibm->bin_bits));
             if (k >= 0) s->w[k] += a;
