@@ -1744,13 +1744,18 @@ MF_INLINE int mf__ibm_box_empty(const mf_ibm *ibm, unsigned int tab, int k, unsi
 /* A bin (its block [s0, s1) of the lists: mf__ibm_off of j and j + 1)
  * against footprint f: 0 empty, 1 no texel near the footprint
  * (mf__ibm_box_empty), 2 it may have some. *b is f's box, computed here on
- * first need (b->ok < 0 before). */
+ * first need (b->ok < 0 before). Blocks shorter than MF__IBM_NEAR_MIN get 2
+ * untested: the few-texel path's scan of their lists costs less than the
+ * test (callgrind, 1e4-texel BRDF at alpha 0.0025: smooth map -9%, car
+ * paint -2%, flakes unchanged; 21 bins and BRDF at 1e2 and 1e6 texels on
+ * the smooth and car-paint maps at alpha 0.01: within 0.1%). */
+#define MF__IBM_NEAR_MIN 128u
 MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, unsigned int s0, unsigned int s1, const mf_footprint *f, mf__ibm_box *b)
 {
     unsigned int n;
     int k;
     if (s0 == s1) return 0;
-    if (s1 - s0 < (unsigned int)MF_IBM_TREE_MIN) return 2;   /* no stored levels */
+    if (s1 - s0 < MF__IBM_NEAR_MIN) return 2;   /* (below MF_IBM_TREE_MIN: no stored levels) */
     if (b->ok < 0) *b = mf__ibm_near_box(ibm, f);
     if (!b->ok) return 2;
     n = mf__ibm_block_texels(ibm, s1 - s0, &k);
