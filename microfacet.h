@@ -3957,15 +3957,16 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
  * the bin of the texel at the center, else 0; non-finite center: 0.
  * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
  * two index reads a window row) returns before any footprint work, and so
- * does a bin whose stored kd-tree top has no texel near the footprint, or a
- * bin of a few texels none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
+ * does a bin of 128 or more whose stored kd-tree top has no texel near the
+ * footprint, or bins of at most 48 texels in all none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
  * texels visit the box (its bin-map rows prefetched), reading each texel's
  * bin before clipping it, unless the wanted bins hold fewer than 2 times
  * the box's texels (then their kd-trees are traversed); larger ones
  * traverse the kd-trees, where a kd node that the footprint's edge cuts and
  * whose texels all lie in the bin (flat regions) counts its box's area in
  * the footprint without descending. Footprints of a few texels get their
- * texels' areas row by row (one clip per row and per texel side); a texel
+ * texels' areas row by row (two clips per row, then each texel's column
+ * by Green's theorem along the row's edges); a texel
  * (or node) cut by one footprint edge gets its area in closed form, by
  * more edges by Green's theorem. Bins that hold at most 48 texels each on
  * average, for a footprint whose texel box meets at most 3 periods each
@@ -7211,7 +7212,7 @@ MF_INLINE int mf__ibm_bin_near(const mf_ibm *ibm, unsigned int s0, unsigned int 
     unsigned int n;
     int k;
     if (s0 == s1) return 0;
-    if (s1 - s0 < MF__IBM_NEAR_MIN) return 2;   /* (below MF_IBM_TREE_MIN: no stored levels) */
+    if (s1 - s0 < MF__IBM_NEAR_MIN) return 2;   /* untested (those below MF_IBM_TREE_MIN store no levels) */
     if (b->ok < 0) *b = mf__ibm_near_box(ibm, f);
     if (!b->ok) return 2;
     n = mf__ibm_block_texels(ibm, s1 - s0, &k);
