@@ -1512,9 +1512,9 @@ MF_FORCE_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc
     for (i = 0; i < nb; ++i) acc[i] += (mf_real)cnt[i] + frac[i];
 }
 
-/* mf__ibm_traverse for one bin (mf_ibm_bin_weight), compiled for nb = 1:
- * 11% fewer instructions than the general code on single-bin queries
- * (measured, car-paint map, 1e4 and 1e6 texels, alpha 0.04) */
+/* mf__ibm_traverse for a set of one bin (mf_ibm_bin_weight), compiled for
+ * nb = 1: 11% fewer instructions than the general code on single-bin
+ * queries (measured, car-paint map, 1e4 and 1e6 texels, alpha 0.04) */
 static MF__NOINLINE MF_HD void mf__ibm_traverse_one(const mf_ibm *ibm, const mf__ibm_piece *pc, const int *bins, mf_real *acc)
 {
     mf__ibm_traverse(ibm, pc, bins, 1, acc);
@@ -1654,7 +1654,7 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
          * against 1, 4, 8 over the 1e2-texel queries of the IBM comparison).
          * One bin always: over the comparison's 24 single-bin queries at 1e2
          * texels, callgrind 1,775M instructions and 0.74M misses against
-         * 2,686M and 2.25M with the rule above, timing 0.72 against 0.76 of
+         * 2,686M and 2.25M with the rule above, timing 0.72 against 0.77 of
          * the plugin's (geometric means); large bins spread over the map
          * (car paint, alpha 0.16) read slower, clustered ones much faster. */
         double texels = 0.0;
