@@ -7113,9 +7113,12 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
          * 2,686M and 2.25M with the rule above, timing 0.72 against 0.77 of
          * the plugin's (geometric means); large bins spread over the map
          * (car paint, alpha 0.16) read slower, clustered ones much faster. */
-        double texels = 0.0;
-        for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
-        if (s->n == 1 || texels < 2.0 * (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
+        if (s->n == 1) direct = 0;
+        else {
+            double texels = 0.0;
+            for (i = 0; i < s->n; ++i) texels += (double)mf_ibm_bin_texels(ibm, s->bin[i]);
+            if (texels < 2.0 * (double)(p->bx1 - p->bx0) * (double)(p->by1 - p->by0)) direct = 0;
+        }
     }
     if (direct && p->bx0 >= 0 && p->bx1 <= ibm->width && p->by0 >= 0 && p->by1 <= ibm->height) {
         /* start the loads of the box's bin-map rows together (the scan
