@@ -632,6 +632,16 @@ typedef struct mf_mat2 { mf_real m00, m01, m10, m11; } mf_mat2; /* row-major */
 /* An orthonormal, right-handed shading frame: t (tangent, the x axis of the
  * local frame, along which alpha_x applies), b = n x t, n (the z axis). */
 typedef struct mf_basis { mf_vec3 t, b, n; } mf_basis;
+/* What a sampler returns (0.4): the direction wi, its density per unit solid
+ * angle, the weight f |wi.z| / pdf with the lobe's own f (Fresnel where the
+ * lobe includes it) and the side it went to. No sample: lobe MF_LOBE_NONE,
+ * wi = 0, pdf = 0, weight = 0. */
+typedef enum mf_lobe { MF_LOBE_NONE = 0, MF_LOBE_REFLECTION = 1, MF_LOBE_TRANSMISSION = 2 } mf_lobe;
+typedef struct mf_sample { mf_vec3 wi; mf_real pdf; mf_real weight; int lobe; } mf_sample;
+/* Which quantity a path carries through a refraction: radiance (the
+ * transmitted value carries 1/eta^2 of the solid-angle compression) or
+ * importance (adjoint transport: no such factor). */
+typedef enum mf_transport { MF_RADIANCE = 0, MF_IMPORTANCE = 1 } mf_transport;
 typedef struct mf_ndf_beckmann { char none; } mf_ndf_beckmann;   /* no parameters beyond mf_ndf.ax, ay */
 typedef struct mf_ndf_ggx { char none; } mf_ndf_ggx;   /* no parameters beyond mf_ndf.ax, ay */
 /* most nodes of the Lambda mixture rule (the rule takes fewer at larger
@@ -704,6 +714,15 @@ MF_FORCE_INLINE mf_vec3 mf_vec3_make(mf_real x, mf_real y, mf_real z)
     mf_vec3 v;
     v.x = x; v.y = y; v.z = z;
     return v;
+}
+/* The empty record: no sample. */
+MF_FORCE_INLINE mf_sample mf__no_sample(void)
+{
+    mf_sample s;
+    s.wi = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    s.pdf = s.weight = MF_R(0.0);
+    s.lobe = MF_LOBE_NONE;
+    return s;
 }
 MF_FORCE_INLINE mf_real mf_dot(mf_vec3 a, mf_vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 MF_FORCE_INLINE mf_vec3 mf_add(mf_vec3 a, mf_vec3 b) { return mf_vec3_make(a.x + b.x, a.y + b.y, a.z + b.z); }
