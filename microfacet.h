@@ -5,7 +5,7 @@
  *   06_kind_student_t.h 06_kind_tabulated.h 07_numeric_vndf.h 08_transform.h
  *   09_smith.h 10_sampling.h 11_brdf.h 11_dielectric.h 12_leadr.h 13_ltc.h
  *   13_ltc_shapes.h 14_ltc_table.h 14_ltc_table_beckmann.h 15_ibm.h
- *   16_microsurface.h 17_energy_table.h 18_energy.h 99_outro.h
+ *   16_microsurface.h 17_energy_table.h 18_energy.h 97_deprecated.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
  * Version 0.3.0.  MIT licensed (see the end of this file).
@@ -316,6 +316,7 @@ typedef double mf_real;
 #define MF_ASIN(x) asin(x)
 #endif
 #define MF_EPS 2.220446049250313e-16
+#define MF_U_MAX 0.99999999999999989   /* 1 - 2^-53: the largest double below 1 */
 #define MF_BIG 1e300
 #define MF_TINY 1e-300
 #else
@@ -379,6 +380,7 @@ typedef float mf_real;
 #define MF_ASIN(x) asinf(x)
 #endif
 #define MF_EPS 1.1920929e-7f
+#define MF_U_MAX 0.99999994f            /* 1 - 2^-24: the largest float below 1 */
 #define MF_BIG 1e30f
 #define MF_TINY 1e-37f
 #endif
@@ -581,7 +583,7 @@ typedef float mf_real;
 #define mf_ibm_neighbourhood_weights MF__SYM(mf_ibm_neighbourhood_weights)
 #define mf_ibm_brdf MF__SYM(mf_ibm_brdf)
 #define mf_ibm_pdf MF__SYM(mf_ibm_pdf)
-#define mf_ibm_brdf_pdf MF__SYM(mf_ibm_brdf_pdf)
+#define mf_ibm_brdf_and_pdf MF__SYM(mf_ibm_brdf_and_pdf)
 #define mf_ibm_sample MF__SYM(mf_ibm_sample)
 #define mf_ibm_build MF__SYM(mf_ibm_build)
 #define mf_ibm_build_ex MF__SYM(mf_ibm_build_ex)
@@ -589,11 +591,9 @@ typedef float mf_real;
 #define mf_ibm_memory_bytes MF__SYM(mf_ibm_memory_bytes)
 #define mf_ibm_save MF__SYM(mf_ibm_save)
 #define mf_ibm_load MF__SYM(mf_ibm_load)
-#define mf_microsurface_options_default MF__SYM(mf_microsurface_options_default)
 #define mf_microsurface_generate MF__SYM(mf_microsurface_generate)
 #define mf_microsurface_generate_ex MF__SYM(mf_microsurface_generate_ex)
 #define mf_microsurface_integrate MF__SYM(mf_microsurface_integrate)
-#define mf_gonio_config_default MF__SYM(mf_gonio_config_default)
 #define mf_gonio_init MF__SYM(mf_gonio_init)
 #define mf_gonio_release MF__SYM(mf_gonio_release)
 #define mf_gonio_cell MF__SYM(mf_gonio_cell)
@@ -611,21 +611,22 @@ typedef float mf_real;
 #define mf_albedo_table_release MF__SYM(mf_albedo_table_release)
 #define mf_albedo_table_eval MF__SYM(mf_albedo_table_eval)
 #define mf_albedo_table_average MF__SYM(mf_albedo_table_average)
-#define mf_brdf_ms_table MF__SYM(mf_brdf_ms_table)
-#define mf_dielectric_ms_build MF__SYM(mf_dielectric_ms_build)
-#define mf_dielectric_ms_release MF__SYM(mf_dielectric_ms_release)
-#define mf_dielectric_albedo MF__SYM(mf_dielectric_albedo)
+#define mf_albedo_table_brdf_ms MF__SYM(mf_albedo_table_brdf_ms)
+#define mf_dielectric_ms_table_build MF__SYM(mf_dielectric_ms_table_build)
+#define mf_dielectric_ms_table_release MF__SYM(mf_dielectric_ms_table_release)
+#define mf_dielectric_ms_table_albedo MF__SYM(mf_dielectric_ms_table_albedo)
 #define mf_dielectric_albedo_integrate MF__SYM(mf_dielectric_albedo_integrate)
-#define mf_dielectric_bsdf_ms MF__SYM(mf_dielectric_bsdf_ms)
-#define mf_dielectric_ms_sample MF__SYM(mf_dielectric_ms_sample)
-#define mf_dielectric_ms_pdf MF__SYM(mf_dielectric_ms_pdf)
+#define mf_dielectric_ms_table_bsdf MF__SYM(mf_dielectric_ms_table_bsdf)
+#define mf_dielectric_ms_table_sample MF__SYM(mf_dielectric_ms_table_sample)
+#define mf_dielectric_ms_table_pdf MF__SYM(mf_dielectric_ms_table_pdf)
 
 /* Result codes of builders. */
 typedef enum mf_result {
     MF_SUCCESS = 0,
     MF_ERROR_INVALID_ARGUMENT = -1,
     MF_ERROR_OUT_OF_MEMORY = -2,
-    MF_ERROR_INVALID_DATA = -3
+    MF_ERROR_INVALID_DATA = -3,
+    MF_ERROR_BUFFER_TOO_SMALL = -4
 } mf_result;
 typedef struct mf_vec3 { mf_real x, y, z; } mf_vec3;
 typedef struct mf_mat2 { mf_real m00, m01, m10, m11; } mf_mat2; /* row-major */
@@ -815,31 +816,36 @@ MF_FORCE_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
 }
 
 /* A direction with density max(0, w.z) / pi (cosine-weighted hemisphere,
- * Malley's method) from u1, u2 in [0, 1]. */
+ * Malley's method) from u1, u2 in [0, 1] (u1 = 1 read as MF_U_MAX, so z > 0
+ * unless u1 is NaN: then z = 0). */
 MF_INLINE mf_vec3 mf__sample_cosine(mf_real u1, mf_real u2)
 {
     mf_real r, phi;
-    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    u1 = mf_clamp(u1, MF_R(0.0), MF_U_MAX);
     r = MF_SQRT(u1);
     phi = MF_R(2.0) * MF_PI * u2;
     return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));
 }
 
-/* Tangent frame (t, b) around a unit normal n, branchless and singularity-free
- * (Duff et al. 2017, "Building an Orthonormal Basis, Revisited"). */
-MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
+/* A shading frame around a unit normal n (t, b = n x t, n), branchless and
+ * singularity-free (Duff et al. 2017, "Building an Orthonormal Basis,
+ * Revisited", Listing 3). */
+MF_INLINE mf_basis mf_basis_from_normal(mf_vec3 n)
 {
+    mf_basis f;
     mf_real s = n.z >= MF_R(0.0) ? MF_R(1.0) : MF_R(-1.0);
     mf_real a = MF_R(-1.0) / (s + n.z);
     mf_real c = n.x * n.y * a;
-    *t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
-    *b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
+    f.t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
+    f.b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
+    f.n = n;
+    return f;
 }
 
 /* The shading frame of the normal n and a tangent: n normalized, the tangent
  * made orthogonal to it (Gram-Schmidt). When the tangent is zero, not finite
  * or parallel to n (its orthogonal part below 1e-4 of its length), any
- * orthonormal frame around n (mf_frame); a zero or non-finite n gives the
+ * orthonormal frame around n (mf_basis_from_normal); a zero or non-finite n gives the
  * identity frame. Orthonormal to float precision for every input. */
 MF_INLINE mf_basis mf_basis_from(mf_vec3 n, mf_vec3 tangent)
 {
@@ -856,7 +862,7 @@ MF_INLINE mf_basis mf_basis_from(mf_vec3 n, mf_vec3 tangent)
         f.t = mf_scale(p, MF_R(1.0) / MF_SQRT(pl2));
         f.t = mf_normalize(mf_add(f.t, mf_scale(n, -mf_dot(f.t, n))));   /* second pass: float */
         f.b = mf_cross(n, f.t);
-    } else mf_frame(n, &f.t, &f.b);
+    } else f = mf_basis_from_normal(n);
     return f;
 }
 /* The frame's coordinates of a world direction, and back. */
@@ -878,12 +884,15 @@ MF_INLINE mf_basis mf_basis_ltc(mf_vec3 n, mf_vec3 wo)
 /* ======================================================================== */
 /* == 3. Fresnel                                                            */
 /* ======================================================================== */
-/* Unpolarized reflectance of a smooth interface. cos_theta_i is the cosine
- * between the incident direction and the normal on the incident side. */
+/* Unpolarized reflectance of a smooth interface whose normal is +z. Every
+ * Fresnel function takes the cosine first. One index convention for the
+ * whole library: eta = index on the -z side over index on the +z side; the
+ * sign of cos_theta (the incident direction's z) says which side the light
+ * is on, and the function flips eta itself. */
 
-/* Dielectric; eta = n_transmitted / n_incident, clamped to [1e-6, 1e6] (<= 0
- * or NaN gives 0). A negative cos_theta_i means the light arrives from the
- * other side: eta is inverted. 1 on total internal reflection. */
+/* Dielectric: cos_theta > 0 reflects on the +z side (relative index eta
+ * across), cos_theta < 0 on the -z side (1 / eta). eta is clamped to
+ * [1e-6, 1e6] (<= 0 or NaN gives 0). 1 on total internal reflection. */
 MF_FORCE_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 {
     mf_real ci, s2t, ct, rs, rp;
@@ -900,11 +909,13 @@ MF_FORCE_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 }
 
 /* Conductor with complex index of refraction eta + i k (relative to the
- * outside medium); exact unpolarized form. eta <= 0, k < 0 or NaN give 0;
- * eta and k are capped at 1e6. */
+ * outside medium, on the +z side); exact unpolarized form. Light cannot come
+ * from inside a conductor: cos_theta is clamped to [0, 1] (grazing, F = 1,
+ * for cos_theta <= 0). eta <= 0, k < 0 or NaN give 0; eta and k are capped
+ * at 1e6. */
 MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real k)
 {
-    mf_real c = mf_clamp(MF_FABS(cos_theta_i), MF_R(0.0), MF_R(1.0));
+    mf_real c = mf_clamp(cos_theta_i, MF_R(0.0), MF_R(1.0));
     if (!(eta > MF_R(0.0)) || !(k >= MF_R(0.0)) || !(c == c)) return MF_R(0.0);
     eta = mf_min(eta, MF_R(1e6));
     k = mf_min(k, MF_R(1e6));
@@ -941,8 +952,9 @@ MF_INLINE mf_real mf_ior_from_f0(mf_real f0)
 }
 
 /* Schlick with an edge value: f0 + (f90 - f0)(1 - cos)^5 (f90 = 1 is
- * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular occlusion). */
-MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_theta)
+ * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular
+ * occlusion). cos_theta is clamped to [0, 1]. */
+MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real cos_theta, mf_real f0, mf_real f90)
 {
     mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0)), m2;
     if (!(m == m)) m = MF_R(0.0);
@@ -952,9 +964,9 @@ MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real 
     return f0 + (f90 - f0) * m2 * m2 * m;
 }
 /* Schlick's approximation f0 + (1 - f0)(1 - cos)^5: the f90 = 1 case. */
-MF_FORCE_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
+MF_FORCE_INLINE mf_real mf_fresnel_schlick(mf_real cos_theta, mf_real f0)
 {
-    return mf_fresnel_schlick_f90(f0, MF_R(1.0), cos_theta);
+    return mf_fresnel_schlick_f90(cos_theta, f0, MF_R(1.0));
 }
 
 /* Artist-friendly conductor Fresnel (Gulbrandsen 2014, "Artist Friendly
@@ -1789,7 +1801,7 @@ MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real
 /* 1 if M can transform a microsurface (finite, |det| above the threshold,
  * and |det| > 1/MF_BIG so that 1/det and with it M^-1 stay finite in mf_real:
  * diag(1e-20, 1e-20) passes the relative test but not this one in float). */
-MF_INLINE int mf_transform_valid(mf_mat2 M)
+MF_INLINE int mf_transform_is_valid(mf_mat2 M)
 {
     mf_real n2 = M.m00 * M.m00 + M.m01 * M.m01 + M.m10 * M.m10 + M.m11 * M.m11;
     mf_real det = MF_FABS(mf_mat2_det(M));
@@ -1805,7 +1817,7 @@ MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
 {
     mf_ndf d = base;
     mf_mat2 P = base.transformed ? mf_mat2_mul(M, base.M) : M;
-    if (!mf_transform_valid(M) || !mf_transform_valid(P)) return base;
+    if (!mf_transform_is_valid(M) || !mf_transform_is_valid(P)) return base;
     if (P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0)) {
         d.transformed = 0;
         d.M = d.Minv = P;
@@ -1888,7 +1900,7 @@ MF_INLINE mf_result mf_tension_matrix(mf_mat2 rest_edges, mf_mat2 deformed_edges
 {
     mf_mat2 Ri;
     if (!T) return MF_ERROR_INVALID_ARGUMENT;
-    if (!mf_transform_valid(rest_edges) || !mf_transform_valid(deformed_edges)) return MF_ERROR_INVALID_DATA;
+    if (!mf_transform_is_valid(rest_edges) || !mf_transform_is_valid(deformed_edges)) return MF_ERROR_INVALID_DATA;
     Ri = mf_mat2_inverse(rest_edges);
     *T = mf_mat2_mul(deformed_edges, Ri);
     return MF_SUCCESS;
@@ -2075,8 +2087,11 @@ MF_FORCE_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
  *             closed-form inverse CDF. */
 
-/* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
-MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return mf_clamp(u, MF_R(0.0), MF_R(1.0)); }
+/* Random numbers: every sampler takes u in [0, 1] inclusive. 1 is read as
+ * MF_U_MAX, the largest mf_real below 1 (a double u in [1 - 2^-25, 1) rounds
+ * to 1.0f, and the inverse CDFs reach infinite slopes at 1); outside [0, 1]
+ * is clamped, NaN becomes 0. */
+MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return mf_clamp(u, MF_R(0.0), MF_U_MAX); }
 
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */
@@ -2156,23 +2171,6 @@ MF_FORCE_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     }
 }
 
-MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi);
-
-/* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. A wi is
- * returned only where mf_brdf_pdf is positive (rounding can put a sampled
- * normal where D underflows to 0, e.g. Beckmann 0.01 at u = (0, 0)). */
-MF_FORCE_INLINE mf_vec3 mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
-{
-    mf_vec3 wm, wi;
-    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    wm = mf_sample_visible(d, wo, u1, u2);
-    wi = mf_reflect(wo, wm);
-    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y) ||
-        !(mf_brdf_pdf(d, wo, wi) > MF_R(0.0)))
-        return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    return wi;
-}
-
 /* Density of mf_brdf_sample per unit solid angle of wi; capped at MF_BIG
  * (near the horizon D_visible / (4 wo.wh) overflows float). */
 MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
@@ -2187,14 +2185,32 @@ MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     return mf__cap(p);
 }
 
-/* f(wo, wi) wi.z / pdf(wi) for a wi from mf_brdf_sample: G2 / G1(wo)
- * = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)). */
-MF_FORCE_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+/* Samples wi for wo through the visible normals of wo (Heitz & d'Eon 2014)
+ * and returns the record: pdf = D_wo(wm) / (4 wo.wm) = D(wm) / (4 A(wo))
+ * with A the projected area (Eq. 3.9; mf_brdf_pdf), weight f wi.z / pdf =
+ * G2 / G1(wo) = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)). D and the
+ * two Lambdas are computed once for the three. No sample (MF_LOBE_NONE) when
+ * wo.z <= 0, when the reflection falls below the horizon, or where rounding
+ * puts the normal where D underflows (pdf 0). */
+MF_FORCE_INLINE mf_sample mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
-    mf_real lo;
-    if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
+    mf_sample s = mf__no_sample();
+    mf_vec3 wm, wi;
+    mf_real lo, li, pdf;
+    if (!(wo.z > MF_R(0.0))) return s;
+    wm = mf_sample_visible(d, wo, u1, u2);
+    wi = mf_reflect(wo, wm);
+    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(mf_dot(wo, wm) > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y))
+        return s;
     lo = mf_lambda(d, wo);
-    return (MF_R(1.0) + lo) / (MF_R(1.0) + lo + mf_lambda(d, wi));
+    li = mf_lambda(d, wi);
+    pdf = mf__cap(mf_D(d, wm) / (MF_R(4.0) * mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo)));
+    if (!(pdf > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = (MF_R(1.0) + lo) / (MF_R(1.0) + lo + li);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
 }
 
 /* GGX bounded visible-normal sampling (Eto & Tokuyoshi 2023, "Bounded VNDF
@@ -2202,43 +2218,56 @@ MF_FORCE_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_ve
  * Dupuy & Benyoub 2023 is shrunk by k (the paper's Eq. 5, with a = min(ax, ay)
  * for anisotropic GGX, Eq. 6) to a cap that still holds every normal whose
  * reflection of wo is above the horizon but far fewer of the others: fewer
- * samples lost (none for isotropic GGX at normal incidence; at alpha 0.5 and
- * 80 degrees 1.4% instead of 7.5%) and a lower-variance estimator (plain /
- * bounded variance of the albedo estimate 2.2 at alpha 0.5, 2.5 to 4 at alpha
- * 1; test_materials). A reflection below the horizon is still possible and
- * counts as no sample. Returns a normal wm (reflect wo on it for wi, as after
- * mf_sample_visible); the zero vector when wo.z <= 0. Any other kind than untransformed GGX falls back to
- * mf_sample_visible, and mf_ggx_brdf_pdf_bounded to mf_brdf_pdf, so the pair
- * stays consistent for every mf_ndf. */
+ * samples lost and a lower-variance estimator (test_materials). A reflection
+ * below the horizon is still possible and counts as no sample. Kinds other
+ * than untransformed GGX take mf_brdf_sample, and mf_brdf_pdf_bounded
+ * mf_brdf_pdf, so the pair stays consistent for every mf_ndf. */
 MF_FORCE_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
 {
     mf_real a = mf_clamp(mf_min(ax, ay), MF_R(0.0), MF_R(1.0)), a2 = a * a;
     mf_real s = MF_R(1.0) + MF_SQRT(wo.x * wo.x + wo.y * wo.y), s2 = s * s;
     return (MF_R(1.0) - a2) * s2 / (s2 + a2 * wo.z * wo.z);   /* Eq. 5 */
 }
-MF_FORCE_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+/* 1 when the bounded sampler applies to d (untransformed GGX) */
+MF_FORCE_INLINE int mf__bounded_applies(const mf_ndf *d) { return d->type == MF_NDF_GGX && !d->transformed; }
+/* The bounded pdf's denominator 2 (k wo.z + t), t = |(ax wo.x, ay wo.y, wo.z)|
+ * (Listing 2): pdf(wi) = D(wm) / that. */
+MF_FORCE_INLINE mf_real mf__ggx_bounded_den(const mf_ndf *d, mf_vec3 wo)
 {
-    mf_vec3 h;
-    if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
-    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf_clamp(u1, MF_R(0.0), MF_R(1.0)), mf_clamp(u2, MF_R(0.0), MF_R(1.0)),
-                                  mf__ggx_bounded_k(d->ax, d->ay, wo));
-    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+    mf_real t = MF_SQRT(d->ax * d->ax * wo.x * wo.x + d->ay * d->ay * wo.y * wo.y + wo.z * wo.z);
+    return MF_R(2.0) * (mf__ggx_bounded_k(d->ax, d->ay, wo) * wo.z + t);
 }
-/* Density per unit solid angle of wi = reflect(wo, wm) for wm from
- * mf_ggx_sample_visible_bounded (paper Listing 2): D(wm) / (2 (k wo.z + t)),
- * t = |(ax wo.x, ay wo.y, wo.z)|; plain VNDF sampling is the case k = 1. */
-MF_FORCE_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+/* The record of a bounded sample: pdf = D(wm) / (2 (k wo.z + t)), weight
+ * f wi.z / pdf = G2 (k wo.z + t) / (2 wo.z). */
+MF_FORCE_INLINE mf_sample mf_brdf_sample_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+{
+    mf_sample s = mf__no_sample();
+    mf_vec3 h, wi;
+    mf_real den, pdf;
+    if (!mf__bounded_applies(d)) return mf_brdf_sample(d, wo, u1, u2);
+    if (!(wo.z > MF_R(0.0))) return s;
+    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf__u01(u1), mf__u01(u2), mf__ggx_bounded_k(d->ax, d->ay, wo));
+    h = mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+    wi = mf_reflect(wo, h);
+    if (!(wi.z > MF_R(0.0)) || !(mf_dot(wo, h) > MF_R(0.0))) return s;
+    den = mf__ggx_bounded_den(d, wo);
+    pdf = mf_min(mf_ggx_D(d->ax, d->ay, h) / den, MF_BIG);
+    if (!(pdf > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = mf_min(mf__ggx_G2(d->ax, d->ay, wo, wi) * den / (MF_R(4.0) * wo.z), MF_BIG);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
+}
+/* Density of mf_brdf_sample_bounded per unit solid angle of wi. */
+MF_FORCE_INLINE mf_real mf_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
     mf_vec3 wh;
-    mf_real t, k;
-    if (d->type != MF_NDF_GGX || d->transformed) return mf_brdf_pdf(d, wo, wi);
+    if (!mf__bounded_applies(d)) return mf_brdf_pdf(d, wo, wi);
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     wh = mf_normalize(mf_add(wo, wi));
     if (!(mf_dot(wo, wh) > MF_R(0.0))) return MF_R(0.0);
-    t = MF_SQRT(d->ax * d->ax * wo.x * wo.x + d->ay * d->ay * wo.y * wo.y + wo.z * wo.z);
-    k = mf__ggx_bounded_k(d->ax, d->ay, wo);
-    return mf_min(mf_ggx_D(d->ax, d->ay, wh) / (MF_R(2.0) * (k * wo.z + t)), MF_BIG);
+    return mf_min(mf_ggx_D(d->ax, d->ay, wh) / mf__ggx_bounded_den(d, wo), MF_BIG);
 }
 
 /* Hemispherical averages of the Fresnel terms, F_avg = 2 int_0^1 F(mu) mu dmu
@@ -2265,13 +2294,13 @@ MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k);
  *                h = normalize(wo + e wi), facing wo's side  (Eqs. 16, 21)
  * with G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) (the height-correlated form,
  * each direction's masking on its own side). The 1 / e^2 = (eta_o / eta_i)^2
- * factor is radiance transport: a path tracer following camera paths uses f
- * as it is. Importance transport (light tracing, photon mapping) omits it:
- * multiply the transmitted value by e^2. Reciprocity holds in the generalized
+ * factor is radiance transport (MF_RADIANCE: a path tracer following camera
+ * paths); importance transport (MF_IMPORTANCE: light tracing, photon
+ * mapping) omits it. Reciprocity holds in the generalized
  * form f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2.
  * Sampling draws visible normals of wo's side (Heitz & d'Eon 2014), then
  * reflection with probability F(wo.h) and refraction otherwise (so the weight
- * f |cos| / pdf is G2 / G1(wo), times 1 / e^2 when transmitted).
+ * f |cos| / pdf is G2 / G1(wo), times 1 / e^2 when transmitted radiance).
  * A wo below the surface is handled by inverting every direction (a height
  * field seen from below, mirrored through the origin, has the same slope
  * distribution, so this is exact for every kind, non-centered LEADR
@@ -2282,15 +2311,18 @@ MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k);
  * delta limit uses mf_fresnel_dielectric with mf_reflect / mf_refract.
  * Thin-walled sheets (two interfaces) are not modelled here. */
 
-/* Refraction of wi (pointing away, on n's side) through the unit normal n;
- * eta = n_transmitted / n_incident (as mf_fresnel_dielectric). *wt: unit, on
- * the other side. Returns 0 on total internal reflection or degenerate input
- * (then *wt is the zero vector). Snell: sin t = sin i / eta. */
+/* Refraction of wi (unit, pointing away from the surface) through the unit
+ * normal n; eta = index on the side opposite n over index on n's side (the
+ * library's convention with n for +z). wi on either side: below n
+ * (wi.n < 0) the function uses -n and 1 / eta. *wt: unit, on the other side
+ * from wi. Returns 1 when refracted, 0 on total internal reflection or
+ * degenerate input (then *wt is the zero vector). Snell: sin t = sin i / e. */
 MF_FORCE_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
 {
     mf_real ci = mf_dot(wi, n), s2t, ct;
     *wt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(ci >= MF_R(0.0)) || !(ci <= MF_R(1.0) + MF_R(1e-3))) return 0;
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(MF_FABS(ci) <= MF_R(1.0) + MF_R(1e-3))) return 0;
+    if (ci < MF_R(0.0)) { n = mf_scale(n, MF_R(-1.0)); ci = -ci; eta = MF_R(1.0) / eta; }
     ci = mf_min(ci, MF_R(1.0));
     s2t = (MF_R(1.0) - ci * ci) / (eta * eta);
     if (!(s2t < MF_R(1.0))) return 0;
@@ -2355,14 +2387,18 @@ MF_FORCE_INLINE int mf__dielectric_prep(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta, 
     return *den > MF_R(0.0);
 }
 
-MF_FORCE_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+/* f(wo, wi) in the given transport mode: MF_RADIANCE carries the 1 / e^2
+ * factor on transmission, MF_IMPORTANCE does not (its transmitted value is
+ * the radiance one times e^2; the adjoint BSDF of Veach 1997, Sec. 5.2). */
+MF_FORCE_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
 {
     mf_vec3 h;
     mf_real F, oh, den, g;
     if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return MF_R(0.0);
     g = mf_D(d, h) * mf__dielectric_G2(d, wo, wi) / wo.z;   /* two divisions: no underflow of wo.z wi.z */
     if (wi.z > MF_R(0.0)) return mf_min(F * g / (MF_R(4.0) * wi.z), MF_BIG);
-    return mf_min((MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z * eta * eta), MF_BIG);
+    g = (MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z);
+    return mf_min(mode == MF_IMPORTANCE ? g : g / (eta * eta), MF_BIG);
 }
 
 /* Density of mf_dielectric_sample per unit solid angle of wi (either side). */
@@ -2377,38 +2413,55 @@ MF_FORCE_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
 }
 
 /* Samples wi (reflected or transmitted) for wo on either side from three
- * uniform numbers; the zero vector means no sample. */
-MF_FORCE_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
+ * uniform numbers (u1, u2 the visible normal of wo's side, u3 the choice
+ * between reflection, with probability F(wo.m), and refraction) and returns
+ * the record: pdf as mf_dielectric_pdf, weight f |wi.z| / pdf = G2 / G1(wo)
+ * = (1 + Lambda(wo)) G2 (LEADR's tilted mean surface: A(wo) G2 / wo.z),
+ * divided by e^2 when transmitted in radiance transport. */
+MF_FORCE_INLINE mf_sample mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
+                                               mf_real u1, mf_real u2, mf_real u3)
 {
-    mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    mf_real s = MF_R(1.0), F;
-    if (!mf__dielectric_ok(wo, eta)) return zero;
-    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; s = MF_R(-1.0); }
+    mf_sample s = mf__no_sample();
+    mf_vec3 m, wi;
+    mf_real sg = MF_R(1.0), F, c, lo, li, A, p, dm, w;
+    int refl;
+    if (!mf__dielectric_ok(wo, eta)) return s;
+    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; sg = MF_R(-1.0); }
     m = mf_sample_visible(d, wo, u1, u2);
-    if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return zero;
-    F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
-    if (u3 < F) {
+    c = mf_dot(wo, m);
+    if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) return s;
+    F = mf_fresnel_dielectric(c, eta);
+    refl = mf__u01(u3) < F;
+    if (refl) {
         wi = mf_reflect(wo, m);
-        if (!(wi.z > MF_R(0.0))) return zero;
+        if (!(wi.z > MF_R(0.0))) return s;
     } else {
-        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return zero;
+        mf_real x;
+        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return s;
+        x = mf_dot(wi, m) + c / eta;
+        if (!(x * x > MF_R(0.0))) return s;
     }
-    return mf_scale(wi, s);
-}
-
-/* f |wi.z| / pdf for a wi from mf_dielectric_sample: G2 / G1(wo) = (1 +
- * Lambda(wo)) G2, divided by e^2 when transmitted (radiance transport);
- * for LEADR moments (a tilted mean surface) the ratio itself. */
-MF_FORCE_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
-{
-    mf_real w;
-    if (d->type == MF_NDF_LEADR) {   /* visible normals of a tilted mean surface: the ratio itself */
-        w = mf_dielectric_pdf(d, wo, wi, eta);
-        return w > MF_R(0.0) ? mf_min(mf_dielectric_bsdf(d, wo, wi, eta) * MF_FABS(wi.z) / w, MF_BIG) : MF_R(0.0);
+    /* pdf: D_wo(m) = c D(m) / A(wo), times F / (4 c) or (1 - F) |wi.m| / (wi.m + c / e)^2 */
+    lo = mf_lambda(d, wo);
+    li = mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
+    A = mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo);
+    dm = mf_D(d, m);
+    if (refl) p = F * dm / (MF_R(4.0) * A);
+    else {
+        mf_real x = mf_dot(wi, m) + c / eta;
+        p = (MF_R(1.0) - F) * c * dm / A * MF_FABS(mf_dot(wi, m)) / (x * x);
     }
-    if (!mf__dielectric_setup(&wo, &wi, &eta)) return MF_R(0.0);
-    w = (MF_R(1.0) + mf_lambda(d, wo)) * mf__dielectric_G2(d, wo, wi);
-    return wi.z > MF_R(0.0) ? w : w / (eta * eta);
+    p = mf_min(p, MF_BIG);
+    if (!(p > MF_R(0.0))) return s;
+    /* f |wi.z| / pdf = A G2 / wo.z, G2 = 1 / (1 + lo + li) (the BSDF divides
+     * by wo.z, the visible normals by the projected area A) */
+    w = A / (wo.z * (MF_R(1.0) + lo + li));
+    if (!refl && mode != MF_IMPORTANCE) w /= eta * eta;
+    s.wi = mf_scale(wi, sg);
+    s.pdf = p;
+    s.weight = mf_min(w, MF_BIG);
+    s.lobe = refl ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
 }
 #ifndef MF_NO_LEADR
 /* ======================================================================== */
@@ -3332,8 +3385,8 @@ typedef struct mf_ltc_fit_result {
     mf_real error;       /* the fitted L3 error estimate */
     mf_real params[3];   /* m11, m22, m13: pass as guess to the next fit */
 } mf_ltc_fit_result;
-MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_real cos_theta_o,
-                           const mf_real *guess, mf_ltc_fit_result *out);
+MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx,
+                           mf_real cos_theta_o, const mf_real *guess);
 
 /* A table of fits over view angle and roughness for a distribution family:
  * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
@@ -3563,7 +3616,7 @@ MF__LTC_RARE mf_real mf__ellipse_clipped(mf_vec3 c, mf_vec3 u, mf_vec3 v)
     mf_vec3 a, b1, b2, e1, e2, x0, x1;
     mf_real pm[9], ff = mf__ellipse_cone(c, u, v, &a, pm), s11, s12, s22, th, A, B, t1, t2, X, Y, R, ph, be, f0, f1, k, sum, j0;
     if (!(ff > MF_R(0.0))) return MF_R(0.0);
-    mf_frame(a, &b1, &b2);
+    { mf_basis fr_ = mf_basis_from_normal(a); b1 = fr_.t; b2 = fr_.b; }
     /* P - p3 I restricted to the plane normal to the axis: eigenvalues p1 - p3, p2 - p3 */
 #define MF__PQ(p, q) ((p).x * (pm[0] * (q).x + pm[3] * (q).y + pm[4] * (q).z) + (p).y * (pm[3] * (q).x + pm[1] * (q).y + pm[5] * (q).z) + \
                       (p).z * (pm[4] * (q).x + pm[5] * (q).y + pm[2] * (q).z))
@@ -3633,7 +3686,7 @@ MF_INLINE mf_real mf_ltc_integrate_disk(const mf_ltc *l, mf_vec3 center, mf_vec3
     mf_real len = MF_SQRT(mf_dot(normal, normal));
     if (!(len > MF_R(0.0)) || !(len < MF_BIG) || !(radius > MF_R(0.0)) || !(radius < MF_BIG)) return MF_R(0.0);
     n = mf_scale(normal, MF_R(1.0) / len);
-    mf_frame(n, &t, &b);
+    { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
     if (mf_dot(mf_cross(t, b), n) < MF_R(0.0)) b = mf_scale(b, MF_R(-1.0));   /* t x b = n */
     return mf_ltc_integrate_ellipse(l, center, mf_scale(t, radius), mf_scale(b, radius), two_sided);
 }
@@ -3780,8 +3833,8 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  *     mf_ibm_build(&ibm, normals_xyz, 2048, 2048, 0.01f);   // check the mf_result
  *     mf_footprint fp = { u, v, dudx, dvdx, dudy, dvdy };
  *     mf_real f = mf_ibm_brdf(&ibm, &fp, wo, wi);           // no Fresnel, no cosine
- *     mf_vec3 wi2 = mf_ibm_sample(&ibm, &fp, wo, u1, u2, u3, u4);   // z <= 0: none
- *     mf_real pdf, f2 = mf_ibm_brdf_pdf(&ibm, &fp, wo, wi2, &pdf);  // both, one query
+ *     mf_sample s = mf_ibm_sample(&ibm, &fp, wo, u1, u2, u3, u4);  // s.wi, s.pdf, s.weight
+ *     mf_real pdf, f2 = mf_ibm_brdf_and_pdf(&ibm, &fp, wo, wi, &pdf);  // both, one query
  *     mf_ibm_release(&ibm);
  *
  * The map's normals and wo, wi share the shading frame: x along u (texel
@@ -4033,7 +4086,7 @@ MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo
 MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
 
 /* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
-MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
+MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
 
 /* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
  * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
@@ -4041,7 +4094,7 @@ MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec
  * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
  * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
  * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
-MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
                                 mf_real u3, mf_real u4);
 
 /* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
@@ -4053,9 +4106,10 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
  * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
  * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
- * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
- * and the cut in sigmas (0: 3, else in [MF_IBM_MIN_CUT, 10]: a cut that
- * rounds to 0 in float would not reload); the neighbourhood radius r grows with b so
+ * MF_IBM_MAX_RES. mf_ibm_build_ex also takes options (NULL or all-zero:
+ * the defaults): the resolution b (0: Eq. 5.14) and the cut in sigmas (0: 3,
+ * else in [MF_IBM_MIN_CUT, 10]: a cut that rounds to 0 in float would not
+ * reload); the neighbourhood radius r grows with b so
  * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
  * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
  * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
@@ -4064,23 +4118,28 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
  * allocated on failure, and *ibm is zeroed. Cost: two passes over the
  * normals (binning in 8 x 8 tiles, then a counting sort in Morton order)
- * and the kd-tree tops; a 2048 x 2048 map at alpha 0.01 in 55-85 ms on one
- * core of the README's machine (flakes and a smooth map, `make bench`). */
+ * and the kd-tree tops (timings: docs/PERFORMANCE.md, `make bench`). */
+typedef struct mf_ibm_options {
+    int resolution;          /* bins per axis b; 0: Eq. 5.14 */
+    mf_real cut_sigmas;      /* the lobe's cut in sigmas; 0: 3 */
+} mf_ibm_options;
 MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
 MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                int resolution, mf_real cut_sigmas);
+                                const mf_ibm_options *options);
 MFDEF void mf_ibm_release(mf_ibm *ibm);
 /* Bytes held: the single integer array (ibm->words * 4). */
 MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
-/* Save and load (no stdio): mf_ibm_save copies the integer array (native
- * byte order) to buf when cap is large enough and returns the bytes it needs
- * (0 for an empty map). mf_ibm_load copies such a buffer (any alignment) into
+/* Save and load (no stdio): mf_ibm_save writes the bytes the map needs to
+ * *bytes and copies the integer array (native byte order) to buf when cap is
+ * large enough. buf NULL: a size query (MF_SUCCESS); cap too small:
+ * MF_ERROR_BUFFER_TOO_SMALL, nothing written; an empty map or NULL:
+ * MF_ERROR_INVALID_ARGUMENT, *bytes = 0. mf_ibm_load copies such a buffer (any alignment) into
  * a new map after validating everything a query reads: magic, version, sizes,
  * a checksum, the index, every texel position (in range, sorted, each texel
  * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
  * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
  * mf_ibm_set_shadowing is not saved: set it again after loading. */
-MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
+MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes);
 MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 /* Area of the unit square where a linear function is >= 0, from its values
  * v[0..3] at the corners (0,0), (1,0), (1,1), (0,1): the triangle, trapezoid
@@ -4240,15 +4299,14 @@ typedef unsigned long long mf_u64;
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
 
+/* Options of mf_microsurface_generate_ex; all-zero (or NULL) means the defaults. */
 typedef struct mf_microsurface_options {
-    int iterations;          /* re-matching iterations (the paper uses 500) */
-    mf_u64 seed;
-    mf_real threshold;       /* Schwarz threshold on eps(x, y), default MF_MICROSURFACE_THRESHOLD */
+    mf_real threshold;       /* Schwarz threshold on eps(x, y); 0: MF_MICROSURFACE_THRESHOLD */
     mf_real max_rematch;     /* at most this fraction of the cells, those of largest eps, is */
                              /* re-matched per iteration; 1: all above the threshold, as in */
                              /* the paper; 0 (default): 0.5 for light tails down to 0.25 for */
                              /* heavy ones (see the implementation) */
-    int stratified;          /* 1: jittered stratified random numbers for Q_m (default); 0: independent */
+    int independent;         /* 0: jittered stratified random numbers for Q_m; 1: independent */
     mf_progress_fn progress; /* called after each iteration with (done, iterations, ctx); may be NULL */
     void *ctx;
     mf_real *gradients;      /* optional output, size*size*2: the final target gradient field, */
@@ -4267,11 +4325,11 @@ typedef struct mf_microsurface_stats {
     mf_real rms_triangle;    /* RMS of the triangle slopes of the result */
 } mf_microsurface_stats;
 
-MFDEF void mf_microsurface_options_default(mf_microsurface_options *o);
 MFDEF mf_result mf_microsurface_generate(const mf_ndf *d, int size, int iterations, mf_u64 seed,
                                          mf_real *heights);
-MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_microsurface_options *o,
-                                            mf_real *heights, mf_microsurface_stats *stats);
+MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, int iterations, mf_u64 seed,
+                                            const mf_microsurface_options *options, mf_real *heights,
+                                            mf_microsurface_stats *stats);
 /* Step 3 alone: the periodic height field (mean 0) whose triangles and
  * central differences best fit per-point slopes gradients_xy (size*size*2,
  * x and y interleaved) in the least-squares sense; the discrete Poisson
@@ -4299,12 +4357,13 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
  * surface then spans more squares than that). */
 #define MF_FACET_MIRROR 0
 #define MF_FACET_LAMBERT 1
+/* A measurement's configuration; all-zero means the defaults. */
 typedef struct mf_gonio_config {
-    mf_vec3 wi;              /* unit, toward the light, wi.z > 0 */
-    int facet;               /* MF_FACET_MIRROR or MF_FACET_LAMBERT */
-    mf_real albedo;          /* power kept at each bounce, [0, 1] (default 1) */
-    int rays;                /* default 1000000 */
-    int max_bounces;         /* default 100 */
+    mf_vec3 wi;              /* toward the light, wi.z > 0; zero: (0, 0, 1) */
+    int facet;               /* MF_FACET_MIRROR (0) or MF_FACET_LAMBERT */
+    mf_real absorption;      /* power lost at each bounce, [0, 1]; 0: none */
+    int rays;                /* 0: 1000000 */
+    int max_bounces;         /* 0: 100 */
     mf_u64 seed;
     mf_progress_fn progress; /* called about 100 times with (rays done, rays, ctx); may be NULL */
     void *ctx;
@@ -4323,7 +4382,6 @@ typedef struct mf_gonio {
     mf_real mean_bounces;    /* mean number of bounces per ray */
 } mf_gonio;
 
-MFDEF void mf_gonio_config_default(mf_gonio_config *c);
 /* Allocates a sensor of `rings` rings (1..1024) with zero readings. */
 MFDEF mf_result mf_gonio_init(mf_gonio *g, int rings);
 MFDEF void mf_gonio_release(mf_gonio *g);
@@ -4403,20 +4461,21 @@ MF_INLINE mf_real mf_ms_fresnel(mf_real f_avg, mf_real e_avg)
 }
 
 /* The compensation lobe is sampled with the cosine distribution (its shape
- * in wi is (1 - E(wi)) wi.z, close to cosine): pdf = wi.z / pi. The weight
- * f_ms wi.z / pdf = pi f_ms. d and wo are unused (kept for symmetry with
- * mf_brdf_sample). The zero vector when wo.z <= 0. */
-MF_INLINE mf_vec3 mf_brdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+ * in wi is (1 - E(wi)) wi.z, close to cosine): pdf = wi.z / pi, weight
+ * f_ms wi.z / pdf = pi f_ms (mf_brdf_ms: table lookups or integration for
+ * the kinds without a table). No sample when wo.z <= 0. */
+MF_INLINE mf_sample mf_brdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
-    mf_real r, phi, z;
-    (void)d;
-    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    u1 = mf__u01(u1); u2 = mf__u01(u2);
-    r = MF_SQRT(u1);
-    phi = MF_R(2.0) * MF_PI * u2;
-    z = MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0)));
-    if (!(z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), z);
+    mf_sample s = mf__no_sample();
+    mf_vec3 wi;
+    if (!(wo.z > MF_R(0.0))) return s;
+    wi = mf__sample_cosine(u1, u2);
+    if (!(wi.z > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = wi.z * MF_INV_PI;
+    s.weight = MF_PI * mf_brdf_ms(d, wo, wi);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
 }
 MF_INLINE mf_real mf_brdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
@@ -4444,7 +4503,7 @@ MFDEF mf_result mf_albedo_table_build(mf_albedo_table *t, const mf_ndf *d, int n
 MFDEF void mf_albedo_table_release(mf_albedo_table *t);
 MFDEF mf_real mf_albedo_table_eval(const mf_albedo_table *t, mf_vec3 wo);
 MFDEF mf_real mf_albedo_table_average(const mf_albedo_table *t);
-MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi);
+MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi);
 
 /* Rough dielectrics (Kulla & Conty 2017, section 2.2), for one mf_ndf and
  * one eta (index below over index above, as mf_dielectric_bsdf). E1(mu) and
@@ -4476,18 +4535,110 @@ typedef struct mf_dielectric_ms_table {
     mf_real E1_avg, E2_avg;  /* hemispherical averages of the interpolants */
     mf_real x, y;            /* shares transmitted from above and from below */
 } mf_dielectric_ms_table;
-MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels);
-MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t);
+MFDEF mf_result mf_dielectric_ms_table_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels);
+MFDEF void mf_dielectric_ms_table_release(mf_dielectric_ms_table *t);
 /* E(wo) of the side of wo (importance transport, reflection + transmission) */
-MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo);
+MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo);
 /* the same by quadrature, for any mf_ndf (0 on bad input) */
 MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels);
 /* the compensation lobe (radiance form), its sampling (u3 picks the side:
  * transmission with the share of wo's side; cosine on that side) and pdf */
-MFDEF mf_real mf_dielectric_bsdf_ms(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
-MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3);
-MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
+MFDEF mf_real mf_dielectric_ms_table_bsdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi, mf_transport mode);
+MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_transport mode,
+                                              mf_real u1, mf_real u2, mf_real u3);
+MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
 
+#ifndef MF_NO_DEPRECATED
+/* ======================================================================== */
+/* == 97. Deprecated 0.3 names (removed in 0.5; MF_NO_DEPRECATED drops them) */
+/* ======================================================================== */
+/* The 0.3 names of renamed functions, each a thin inline wrapper of its 0.4
+ * form, marked deprecated where the compiler can say so. Functions whose
+ * signature changed under the same name (the samplers now return mf_sample,
+ * the dielectric functions take an mf_transport, the Fresnel functions take
+ * the cosine first) have no alias: the README's migration table lists them. */
+#if defined(__cplusplus) && __cplusplus >= 201402L
+#define MF_DEPRECATED(msg) [[deprecated(msg)]]
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF_DEPRECATED(msg) __attribute__((deprecated(msg)))
+#elif defined(_MSC_VER)
+#define MF_DEPRECATED(msg) __declspec(deprecated(msg))
+#else
+#define MF_DEPRECATED(msg)
+#endif
+
+/* 0.3: the sample weight G2 / G1(wo) of mf_brdf_sample's direction */
+MF_DEPRECATED("use mf_brdf_sample(...).weight") MF_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_real lo;
+    if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
+    lo = mf_lambda(d, wo);
+    return (MF_R(1.0) + lo) / (MF_R(1.0) + lo + mf_lambda(d, wi));
+}
+/* 0.3: a normal of the bounded cap (reflect wo on it for wi) */
+MF_DEPRECATED("use mf_brdf_sample_bounded") MF_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+{
+    mf_vec3 h;
+    if (!mf__bounded_applies(d)) return mf_sample_visible(d, wo, u1, u2);
+    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf__u01(u1), mf__u01(u2), mf__ggx_bounded_k(d->ax, d->ay, wo));
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+}
+MF_DEPRECATED("use mf_brdf_pdf_bounded") MF_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+{
+    return mf_brdf_pdf_bounded(d, wo, wi);
+}
+/* 0.3: f |wi.z| / pdf of mf_dielectric_sample's direction, radiance transport */
+MF_DEPRECATED("use mf_dielectric_sample(...).weight") MF_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    mf_real p = mf_dielectric_pdf(d, wo, wi, eta);
+    return p > MF_R(0.0) ? mf_min(mf_dielectric_bsdf(d, wo, wi, eta, MF_RADIANCE) * MF_FABS(wi.z) / p, MF_BIG) : MF_R(0.0);
+}
+MF_DEPRECATED("use mf_albedo_table_brdf_ms") MF_INLINE mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
+{
+    return mf_albedo_table_brdf_ms(t, wo, wi);
+}
+MF_DEPRECATED("use mf_dielectric_ms_table_build") MF_INLINE mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels)
+{
+    return mf_dielectric_ms_table_build(t, d, eta, n_mu, panels);
+}
+MF_DEPRECATED("use mf_dielectric_ms_table_release") MF_INLINE void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
+{
+    mf_dielectric_ms_table_release(t);
+}
+MF_DEPRECATED("use mf_dielectric_ms_table_pdf") MF_INLINE mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+{
+    return mf_dielectric_ms_table_pdf(t, wo, wi);
+}
+/* 0.3: an orthonormal t, b around n */
+MF_DEPRECATED("use mf_basis_from_normal") MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
+{
+    mf_basis f = mf_basis_from_normal(n);
+    *t = f.t;
+    *b = f.b;
+}
+MF_DEPRECATED("use mf_transform_is_valid") MF_INLINE int mf_transform_valid(mf_mat2 M)
+{
+    return mf_transform_is_valid(M);
+}
+#ifndef MF_NO_IBM
+MF_DEPRECATED("use mf_ibm_brdf_and_pdf") MF_INLINE mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
+{
+    return mf_ibm_brdf_and_pdf(ibm, f, wo, wi, pdf);
+}
+#endif
+#ifndef MF_NO_MICROSURFACE
+/* 0.3: options filled with the defaults; in 0.4 all-zero options are the defaults */
+MF_DEPRECATED("zero the struct: all-zero options are the defaults") MF_INLINE void mf_microsurface_options_default(mf_microsurface_options *o)
+{
+    if (o) memset(o, 0, sizeof *o);
+}
+MF_DEPRECATED("zero the struct: an all-zero configuration is the default") MF_INLINE void mf_gonio_config_default(mf_gonio_config *c)
+{
+    if (c) memset(c, 0, sizeof *c);
+}
+#endif
+#endif /* MF_NO_DEPRECATED */
 
 #ifdef __cplusplus
 }
@@ -7538,7 +7689,7 @@ MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo,
     return pdf;
 }
 
-MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
+MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
 {
     mf_real tmp = MF_R(0.0);
     if (!pdf) pdf = &tmp;
@@ -7547,17 +7698,16 @@ MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     return mf__ibm_lobes(ibm, f, wo, wi, 1, pdf);
 }
 
-MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
-                                mf_real u3, mf_real u4)
+/* the direction of mf_ibm_sample (the zero vector: none) */
+MF_INLINE mf_vec3 mf__ibm_sample_dir(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                     mf_real u3, mf_real u4)
 {
     mf_vec3 none = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), t, tt, tb, o, m, wi, h;
     mf__ibm_fp p;
     int tx, ty, j, dx, dy, r;
     if (!ibm || !ibm->data || !(wo.z > MF_R(0.0))) return none;
     mf__ibm_footprint(ibm, f, &p);
-    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0)); u2 = mf_clamp(u2, MF_R(0.0), MF_R(1.0));
-    if (!(u1 == u1)) u1 = MF_R(0.5);
-    if (!(u2 == u2)) u2 = MF_R(0.5);
+    u1 = mf__u01(u1); u2 = mf__u01(u2);
     if (p.mode == MF__IBM_NONE) return none;
     if (p.mode == MF__IBM_POINT) { tx = p.tx; ty = p.ty; }
     else if (p.mode == MF__IBM_GLOBAL) {
@@ -7573,7 +7723,7 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
     j = mf_ibm_texel_bin(ibm, tx, ty);
     t = mf_ibm_bin_normal(ibm, j);
     if (!(mf_dot(wo, t) > MF_R(0.0))) return none;
-    mf_frame(t, &tt, &tb);
+    { mf_basis fr_ = mf_basis_from_normal(t); tt = fr_.t; tb = fr_.b; }
     o = mf_vec3_make(mf_dot(wo, tt), mf_dot(wo, tb), mf_dot(wo, t));
     m = mf_beckmann_sample_visible(ibm->alpha, ibm->alpha, o, u3, u4);
     m = mf_add(mf_add(mf_scale(tt, m.x), mf_scale(tb, m.y)), mf_scale(t, m.z));
@@ -7593,6 +7743,21 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
             return none;
     }
     return wi;
+}
+MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                mf_real u3, mf_real u4)
+{
+    mf_sample s = mf__no_sample();
+    mf_real fv, pdf = MF_R(0.0);
+    mf_vec3 wi = mf__ibm_sample_dir(ibm, f, wo, u1, u2, u3, u4);
+    if (!(wi.z > MF_R(0.0))) return s;
+    fv = mf_ibm_brdf_and_pdf(ibm, f, wo, wi, &pdf);
+    if (!(pdf > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = mf_min(fv * wi.z / pdf, MF_BIG);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
 }
 #endif /* MF_NO_IBM */
 
@@ -7617,6 +7782,7 @@ MFDEF const char *mf_result_string(mf_result r)
     case MF_ERROR_INVALID_ARGUMENT: return "invalid argument";
     case MF_ERROR_OUT_OF_MEMORY: return "out of memory";
     case MF_ERROR_INVALID_DATA: return "invalid data";
+    case MF_ERROR_BUFFER_TOO_SMALL: return "buffer too small";
     default: return "unknown result";
     }
 }
@@ -8103,8 +8269,8 @@ static mf_real mf__nelder_mead(const mf__fit_ctx *c, mf_real *x, mf_real step, i
     }
 }
 
-MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_real cos_theta_o,
-                           const mf_real *guess, mf_ltc_fit_result *out)
+MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx,
+                           mf_real cos_theta_o, const mf_real *guess)
 {
     mf__fit_ctx c;
     mf_real ct, st, sum = MF_R(0.0), fres = MF_R(0.0), p[3];
@@ -8127,7 +8293,7 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
         for (j = 0; j < 8 * n1; ++j) {
             mf_real u1 = ((mf_real)i + MF_R(0.5)) / (mf_real)(8 * n1), u2 = ((mf_real)j + MF_R(0.5)) / (mf_real)(8 * n1), f, pdf, w;
             mf_vec3 wi, h;
-            wi = brdf ? mf__sample_cosine(u1, u2) : mf_brdf_sample(d, c.wo, u1, u2);
+            wi = brdf ? mf__sample_cosine(u1, u2) : mf_brdf_sample(d, c.wo, u1, u2).wi;
             f = mf__fit_f(&c, wi);
             pdf = mf__fit_pdf(&c, wi);
             w = pdf > MF_R(0.0) ? f / pdf : MF_R(0.0);
@@ -8215,7 +8381,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
         for (i = 0; i < n_theta; ++i) {
             mf_ltc_fit_result r;
             float *e = t->data + 6 * ((size_t)j * (size_t)n_theta + (size_t)i);
-            mf_result res = mf_ltc_fit(&d, 0, 0, mf__ltc_grid_cos(i, n_theta), prev, &r);
+            mf_result res = mf_ltc_fit(&r, &d, 0, 0, mf__ltc_grid_cos(i, n_theta), prev);
             if (res != MF_SUCCESS) { mf_ltc_table_release(t); return res; }
             e[0] = (float)r.inv[0]; e[1] = (float)r.inv[1]; e[2] = (float)r.inv[2]; e[3] = (float)r.inv[3];
             e[4] = (float)r.albedo; e[5] = (float)r.fresnel;
@@ -12669,8 +12835,10 @@ static void mf__ibm_resolution(mf_real alpha, mf_real cut, int resolution, int *
 }
 
 MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                int resolution, mf_real cut_sigmas)
+                                const mf_ibm_options *options)
 {
+    int resolution = options ? options->resolution : 0;
+    mf_real cut_sigmas = options ? options->cut_sigmas : MF_R(0.0);
     mf_ibm L;
     size_t n, bins, words, i, ncodes, bmw;
     unsigned int *data = 0, *cur = 0, *st = 0, *list, *bmap = 0, *t32 = 0, start = 0u, bad = 0u, none;
@@ -12900,7 +13068,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
 
 MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha)
 {
-    return mf_ibm_build_ex(ibm, normals_xyz, width, height, flake_alpha, 0, MF_R(0.0));
+    return mf_ibm_build_ex(ibm, normals_xyz, width, height, flake_alpha, 0);
 }
 
 MFDEF void mf_ibm_release(mf_ibm *ibm)
@@ -12915,17 +13083,21 @@ MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm)
     return ibm && ibm->data ? ibm->words * sizeof(unsigned int) : 0u;
 }
 
-MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap)
+MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes)
 {
-    size_t bytes, i;
-    if (!ibm || !ibm->data) return 0u;
-    bytes = ibm->words * sizeof(unsigned int);
-    if (buf && cap >= bytes) {
+    size_t n, i;
+    if (bytes) *bytes = 0u;
+    if (!ibm || !ibm->data || !bytes) return MF_ERROR_INVALID_ARGUMENT;
+    n = ibm->words * sizeof(unsigned int);
+    *bytes = n;
+    if (!buf) return MF_SUCCESS;
+    if (cap < n) return MF_ERROR_BUFFER_TOO_SMALL;
+    {
         const unsigned char *s = (const unsigned char *)ibm->data;
         unsigned char *d = (unsigned char *)buf;
-        for (i = 0; i < bytes; ++i) d[i] = s[i];
+        for (i = 0; i < n; ++i) d[i] = s[i];
     }
-    return bytes;
+    return MF_SUCCESS;
 }
 
 /* every check a query relies on; 1 if the array is a valid map */
@@ -13547,20 +13719,6 @@ static void mf__ms_rematch(mf__ms *m, int k, mf__pcg *rng)
     }
 }
 
-MFDEF void mf_microsurface_options_default(mf_microsurface_options *o)
-{
-    if (!o) return;
-    o->iterations = 100;
-    o->seed = 1;
-    o->threshold = MF_MICROSURFACE_THRESHOLD;
-    o->max_rematch = MF_R(0.0);
-    o->stratified = 1;
-    o->progress = 0;
-    o->ctx = 0;
-    o->gradients = 0;
-    o->schwarz = 0;
-}
-
 /* 1 if d can be sampled and evaluated: finite roughness, a finite unit
  * sample with z > 0 and D > 0 there, and no mean slope (LEADR) */
 static int mf__ms_ndf_ok(const mf_ndf *d)
@@ -13568,7 +13726,7 @@ static int mf__ms_ndf_ok(const mf_ndf *d)
     mf_vec3 m;
     mf_real v;
     if (!(d->ax > MF_R(0.0) && d->ax < MF_BIG) || !(d->ay > MF_R(0.0) && d->ay < MF_BIG)) return 0;
-    if (d->transformed && !mf_transform_valid(d->M)) return 0;
+    if (d->transformed && !mf_transform_is_valid(d->M)) return 0;
     if (d->type == MF_NDF_LEADR && (d->p.leadr.mx != MF_R(0.0) || d->p.leadr.my != MF_R(0.0))) return 0;
     m = mf_sample_D(d, MF_R(0.3), MF_R(0.2));
     v = mf_D(d, m);
@@ -13576,9 +13734,12 @@ static int mf__ms_ndf_ok(const mf_ndf *d)
            v > MF_R(0.0) && v < MF_BIG;
 }
 
-MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_microsurface_options *o,
-                                            mf_real *heights, mf_microsurface_stats *stats)
+MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, int iterations, mf_u64 seed,
+                                            const mf_microsurface_options *options, mf_real *heights,
+                                            mf_microsurface_stats *stats)
 {
+    mf_microsurface_options oz;
+    const mf_microsurface_options *o = options;
     mf__ms m;
     mf__pcg rng;
     int n = size, it, k = 0, x, y;
@@ -13589,23 +13750,24 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
         stats->below = stats->eps_mean = stats->eps_median = MF_R(0.0);
         stats->rms_target = stats->rms_central = stats->rms_triangle = MF_R(0.0);
     }
-    if (!d || !o || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
-        o->iterations < 0 || o->iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
+    if (!o) { memset(&oz, 0, sizeof oz); o = &oz; }
+    if (!d || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
+        iterations < 0 || iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
         !(o->max_rematch >= MF_R(0.0) && o->max_rematch <= MF_R(1.0)) || !mf__ms_ndf_ok(d))
         return MF_ERROR_INVALID_ARGUMENT;
-    thr = (double)o->threshold;
+    thr = o->threshold > MF_R(0.0) ? (double)o->threshold : (double)MF_MICROSURFACE_THRESHOLD;
     mf__ms_zero(&m);
     if (!mf__ms_alloc(&m, n)) { mf__ms_free(&m); return MF_ERROR_OUT_OF_MEMORY; }
     n2 = m.n2;
     mf__fft_twiddles(m.fc, m.fs, n);
     /* Q_m: n^2 slopes drawn with density D cos (= the slope density P22),
      * stratified on an n x n grid of (u1, u2) when asked; then shuffled onto the grid */
-    mf__pcg_seed(&rng, o->seed, 0x6d66u);
+    mf__pcg_seed(&rng, seed, 0x6d66u);
     for (y = 0; y < n; ++y)
         for (x = 0; x < n; ++x) {
             double u1 = mf__pcg_u01(&rng), u2 = mf__pcg_u01(&rng), sxv, syv, l;
             mf_vec3 w;
-            if (o->stratified) { u1 = ((double)x + u1) / (double)n; u2 = ((double)y + u2) / (double)n; }
+            if (!o->independent) { u1 = ((double)x + u1) / (double)n; u2 = ((double)y + u2) / (double)n; }
             w = mf_sample_D(d, mf__u01_real(u1), mf__u01_real(u2));
             i = (size_t)y * (size_t)n + (size_t)x;
             if (w.z > MF_R(0.0)) {
@@ -13644,11 +13806,11 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
     }
     /* Algorithm 1: integrate, then (compute errors, re-match, integrate) per iteration */
     mf__ms_integrate(&m);
-    for (it = 0; it < o->iterations; ++it) {
+    for (it = 0; it < iterations; ++it) {
         k = mf__ms_errors(&m, thr, cap);
         mf__ms_rematch(&m, k, &rng);
         mf__ms_integrate(&m);
-        if (o->progress) o->progress(it + 1, o->iterations, o->ctx);
+        if (o->progress) o->progress(it + 1, iterations, o->ctx);
     }
     k = mf__ms_errors(&m, thr, 1.0);
     for (i = 0; i < n2; ++i) heights[i] = (mf_real)m.h[i];
@@ -13669,8 +13831,8 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
                 acc[2] += 0.5 * (fx * fx + fy * fy + bx * bx + by * by);
                 acc[3] += m.eps[i];
             }
-        stats->iterations = o->iterations;
-        stats->rematched = o->iterations > 0 ? k : 0;
+        stats->iterations = iterations;
+        stats->rematched = iterations > 0 ? k : 0;
         stats->below = (mf_real)(1.0 - (double)k / (double)n2);
         stats->eps_mean = (mf_real)(acc[3] / (double)n2);
         stats->rms_target = (mf_real)mf__sqrt_d(acc[0] / (2.0 * (double)n2));
@@ -13685,11 +13847,7 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
 
 MFDEF mf_result mf_microsurface_generate(const mf_ndf *d, int size, int iterations, mf_u64 seed, mf_real *heights)
 {
-    mf_microsurface_options o;
-    mf_microsurface_options_default(&o);
-    o.iterations = iterations;
-    o.seed = seed;
-    return mf_microsurface_generate_ex(d, size, &o, heights, 0);
+    return mf_microsurface_generate_ex(d, size, iterations, seed, 0, heights, 0);
 }
 
 MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size, mf_real *heights)
@@ -13720,19 +13878,6 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
 }
 
 /* ---- The virtual gonioreflectometer ---- */
-
-MFDEF void mf_gonio_config_default(mf_gonio_config *c)
-{
-    if (!c) return;
-    c->wi = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    c->facet = MF_FACET_MIRROR;
-    c->albedo = MF_R(1.0);
-    c->rays = 1000000;
-    c->max_bounces = 100;
-    c->seed = 1;
-    c->progress = 0;
-    c->ctx = 0;
-}
 
 MFDEF void mf_gonio_release(mf_gonio *g)
 {
@@ -13972,19 +14117,25 @@ static double mf__wrap(double x, int n)
     return x;
 }
 
-MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, const mf_gonio_config *c)
+MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, const mf_gonio_config *config)
 {
+    mf_gonio_config cz;
+    const mf_gonio_config *c = &cz;
     mf__tracer T;
     mf__pcg rng;
     double *h, *top, *acc, e1 = 0.0, em = 0.0, el = 0.0, bounces = 0.0, zmax = -1e300;
     size_t i, n2;
     int n = size, r, x, y, leak = 0, lost = 0, every;
     mf_vec3 wi;
-    if (!g || !g->ring_z || !g->first || !heights || !c || !mf__pow2(size) || size < 4 || size > MF_MICROSURFACE_MAX_SIZE)
+    if (!g || !g->ring_z || !g->first || !heights || !mf__pow2(size) || size < 4 || size > MF_MICROSURFACE_MAX_SIZE)
         return MF_ERROR_INVALID_ARGUMENT;
+    if (config) cz = *config; else memset(&cz, 0, sizeof cz);
+    if (cz.wi.x == MF_R(0.0) && cz.wi.y == MF_R(0.0) && cz.wi.z == MF_R(0.0)) cz.wi.z = MF_R(1.0);
+    if (cz.rays == 0) cz.rays = 1000000;
+    if (cz.max_bounces == 0) cz.max_bounces = 100;
     wi = mf_normalize(c->wi);
     if (!(wi.z > MF_R(0.0)) || (c->facet != MF_FACET_MIRROR && c->facet != MF_FACET_LAMBERT) ||
-        !(c->albedo >= MF_R(0.0) && c->albedo <= MF_R(1.0)) || c->rays < 1 || c->max_bounces < 1)
+        !(c->absorption >= MF_R(0.0) && c->absorption <= MF_R(1.0)) || c->rays < 1 || c->max_bounces < 1)
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)n * (size_t)n;
     for (i = 0; i < n2; ++i)
@@ -14037,13 +14188,13 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
                 o[1] = mf__wrap(o[1] + t * d[1], n);
                 o[2] = o[2] + t * d[2];
                 skip = facet;
-                w *= (double)c->albedo;
+                w *= 1.0 - (double)c->absorption;
                 if (c->facet == MF_FACET_MIRROR) dir = mf_normalize(mf_reflect(mf_scale(dir, MF_R(-1.0)), m));
                 else {   /* cosine-distributed about the facet normal */
                     mf_vec3 tt, bb, l;
                     mf_real u1 = mf__u01_real(mf__pcg_u01(&rng)), u2 = mf__u01_real(mf__pcg_u01(&rng));
                     l = mf__sample_cosine(u1, u2);
-                    mf_frame(m, &tt, &bb);
+                    { mf_basis fr_ = mf_basis_from_normal(m); tt = fr_.t; bb = fr_.b; }
                     dir = mf_normalize(mf_add(mf_add(mf_scale(tt, l.x), mf_scale(bb, l.y)), mf_scale(m, l.z)));
                 }
                 if (!(w > 0.0)) { bounces += (double)hits; done = 1; }   /* absorbed */
@@ -15081,7 +15232,7 @@ MFDEF mf_real mf_albedo_table_average(const mf_albedo_table *t)
     return (t && t->E) ? t->E_avg : MF_R(0.0);
 }
 
-MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
+MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     if (!t || !t->E || !(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     return mf__ms_lobe(mf_albedo_table_eval(t, wo), mf_albedo_table_eval(t, wi), t->E_avg);
@@ -15097,7 +15248,7 @@ MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_rea
     return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels);
 }
 
-MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
+MFDEF void mf_dielectric_ms_table_release(mf_dielectric_ms_table *t)
 {
     if (!t) return;
     if (t->E) MF_FREE(t->E);
@@ -15106,7 +15257,7 @@ MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
     t->E1_avg = t->E2_avg = t->x = t->y = t->eta = MF_R(0.0);
 }
 
-MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels)
+MFDEF mf_result mf_dielectric_ms_table_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels)
 {
     int i, s;
     double *row, avg[2], x, y;
@@ -15124,7 +15275,7 @@ MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *
             mf_real e;
             if (s) w.z = -w.z;
             e = mf_dielectric_albedo_integrate(d, w, eta, panels);
-            if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_dielectric_ms_release(t); return MF_ERROR_INVALID_DATA; }
+            if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_dielectric_ms_table_release(t); return MF_ERROR_INVALID_DATA; }
             t->E[(size_t)s * (size_t)n_mu + (size_t)i] = e;
             row[i] = (double)e;
         }
@@ -15147,7 +15298,7 @@ MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *
     return MF_SUCCESS;
 }
 
-MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
+MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
 {
     mf_real mu, fx;
     const mf_real *E;
@@ -15167,33 +15318,42 @@ static inline mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_
     mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);
     mf_real ea = below_i ? t->E2_avg : t->E1_avg, den = MF_PI * (MF_R(1.0) - ea);
     if (!(den > MF_R(1e-6))) return MF_R(0.0);
-    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_albedo(t, wi)) / den,
+    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wi)) / den,
                     MF_R(0.0), MF_BIG);
 }
 
-MFDEF mf_real mf_dielectric_bsdf_ms(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+MFDEF mf_real mf_dielectric_ms_table_bsdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi, mf_transport mode)
 {
     mf_real f, e;
     if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
     f = mf__dielectric_ms_imp(t, wo, wi);
-    if (wo.z * wi.z > MF_R(0.0)) return f;
+    if (wo.z * wi.z > MF_R(0.0) || mode == MF_IMPORTANCE) return f;
     e = wo.z > MF_R(0.0) ? t->eta : MF_R(1.0) / t->eta;   /* eta_i / eta_o */
     return f / (e * e);
 }
 
-MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3)
+MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_transport mode,
+                                              mf_real u1, mf_real u2, mf_real u3)
 {
+    mf_sample s = mf__no_sample();
     mf_vec3 w;
-    mf_real share;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    w = mf_brdf_ms_sample(0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), u1, u2);
+    mf_real share, p;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return s;
+    w = mf__sample_cosine(u1, u2);
+    if (!(w.z > MF_R(0.0))) return s;
     share = wo.z < MF_R(0.0) ? t->y : t->x;   /* transmitted share */
     if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
     if (wo.z < MF_R(0.0)) w.z = -w.z;
-    return w;
+    p = mf_dielectric_ms_table_pdf(t, wo, w);
+    if (!(p > MF_R(0.0))) return s;
+    s.wi = w;
+    s.pdf = p;
+    s.weight = mf_min(mf_dielectric_ms_table_bsdf(t, wo, w, mode) * MF_FABS(w.z) / p, MF_BIG);
+    s.lobe = wo.z * w.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
 }
 
-MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     mf_real share;
     if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);

@@ -82,6 +82,7 @@ typedef double mf_real;
 #define MF_ASIN(x) asin(x)
 #endif
 #define MF_EPS 2.220446049250313e-16
+#define MF_U_MAX 0.99999999999999989   /* 1 - 2^-53: the largest double below 1 */
 #define MF_BIG 1e300
 #define MF_TINY 1e-300
 #else
@@ -145,6 +146,7 @@ typedef float mf_real;
 #define MF_ASIN(x) asinf(x)
 #endif
 #define MF_EPS 1.1920929e-7f
+#define MF_U_MAX 0.99999994f            /* 1 - 2^-24: the largest float below 1 */
 #define MF_BIG 1e30f
 #define MF_TINY 1e-37f
 #endif
@@ -293,7 +295,8 @@ typedef enum mf_result {
     MF_SUCCESS = 0,
     MF_ERROR_INVALID_ARGUMENT = -1,
     MF_ERROR_OUT_OF_MEMORY = -2,
-    MF_ERROR_INVALID_DATA = -3
+    MF_ERROR_INVALID_DATA = -3,
+    MF_ERROR_BUFFER_TOO_SMALL = -4
 } mf_result;
 /* @api */
 /* A short English name of a result code. */
@@ -306,6 +309,7 @@ MFDEF const char *mf_result_string(mf_result r)
     case MF_ERROR_INVALID_ARGUMENT: return "invalid argument";
     case MF_ERROR_OUT_OF_MEMORY: return "out of memory";
     case MF_ERROR_INVALID_DATA: return "invalid data";
+    case MF_ERROR_BUFFER_TOO_SMALL: return "buffer too small";
     default: return "unknown result";
     }
 }

@@ -125,31 +125,36 @@ MF_FORCE_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
 }
 
 /* A direction with density max(0, w.z) / pi (cosine-weighted hemisphere,
- * Malley's method) from u1, u2 in [0, 1]. */
+ * Malley's method) from u1, u2 in [0, 1] (u1 = 1 read as MF_U_MAX, so z > 0
+ * unless u1 is NaN: then z = 0). */
 MF_INLINE mf_vec3 mf__sample_cosine(mf_real u1, mf_real u2)
 {
     mf_real r, phi;
-    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    u1 = mf_clamp(u1, MF_R(0.0), MF_U_MAX);
     r = MF_SQRT(u1);
     phi = MF_R(2.0) * MF_PI * u2;
     return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));
 }
 
-/* Tangent frame (t, b) around a unit normal n, branchless and singularity-free
- * (Duff et al. 2017, "Building an Orthonormal Basis, Revisited"). */
-MF_INLINE void mf_frame(mf_vec3 n, mf_vec3 *t, mf_vec3 *b)
+/* A shading frame around a unit normal n (t, b = n x t, n), branchless and
+ * singularity-free (Duff et al. 2017, "Building an Orthonormal Basis,
+ * Revisited", Listing 3). */
+MF_INLINE mf_basis mf_basis_from_normal(mf_vec3 n)
 {
+    mf_basis f;
     mf_real s = n.z >= MF_R(0.0) ? MF_R(1.0) : MF_R(-1.0);
     mf_real a = MF_R(-1.0) / (s + n.z);
     mf_real c = n.x * n.y * a;
-    *t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
-    *b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
+    f.t = mf_vec3_make(MF_R(1.0) + s * n.x * n.x * a, s * c, -s * n.x);
+    f.b = mf_vec3_make(c, s + n.y * n.y * a, -n.y);
+    f.n = n;
+    return f;
 }
 
 /* The shading frame of the normal n and a tangent: n normalized, the tangent
  * made orthogonal to it (Gram-Schmidt). When the tangent is zero, not finite
  * or parallel to n (its orthogonal part below 1e-4 of its length), any
- * orthonormal frame around n (mf_frame); a zero or non-finite n gives the
+ * orthonormal frame around n (mf_basis_from_normal); a zero or non-finite n gives the
  * identity frame. Orthonormal to float precision for every input. */
 MF_INLINE mf_basis mf_basis_from(mf_vec3 n, mf_vec3 tangent)
 {
@@ -166,7 +171,7 @@ MF_INLINE mf_basis mf_basis_from(mf_vec3 n, mf_vec3 tangent)
         f.t = mf_scale(p, MF_R(1.0) / MF_SQRT(pl2));
         f.t = mf_normalize(mf_add(f.t, mf_scale(n, -mf_dot(f.t, n))));   /* second pass: float */
         f.b = mf_cross(n, f.t);
-    } else mf_frame(n, &f.t, &f.b);
+    } else f = mf_basis_from_normal(n);
     return f;
 }
 /* The frame's coordinates of a world direction, and back. */

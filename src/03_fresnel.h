@@ -2,12 +2,15 @@
 /* ======================================================================== */
 /* == 3. Fresnel                                                            */
 /* ======================================================================== */
-/* Unpolarized reflectance of a smooth interface. cos_theta_i is the cosine
- * between the incident direction and the normal on the incident side. */
+/* Unpolarized reflectance of a smooth interface whose normal is +z. Every
+ * Fresnel function takes the cosine first. One index convention for the
+ * whole library: eta = index on the -z side over index on the +z side; the
+ * sign of cos_theta (the incident direction's z) says which side the light
+ * is on, and the function flips eta itself. */
 
-/* Dielectric; eta = n_transmitted / n_incident, clamped to [1e-6, 1e6] (<= 0
- * or NaN gives 0). A negative cos_theta_i means the light arrives from the
- * other side: eta is inverted. 1 on total internal reflection. */
+/* Dielectric: cos_theta > 0 reflects on the +z side (relative index eta
+ * across), cos_theta < 0 on the -z side (1 / eta). eta is clamped to
+ * [1e-6, 1e6] (<= 0 or NaN gives 0). 1 on total internal reflection. */
 MF_FORCE_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 {
     mf_real ci, s2t, ct, rs, rp;
@@ -24,11 +27,13 @@ MF_FORCE_INLINE mf_real mf_fresnel_dielectric(mf_real cos_theta_i, mf_real eta)
 }
 
 /* Conductor with complex index of refraction eta + i k (relative to the
- * outside medium); exact unpolarized form. eta <= 0, k < 0 or NaN give 0;
- * eta and k are capped at 1e6. */
+ * outside medium, on the +z side); exact unpolarized form. Light cannot come
+ * from inside a conductor: cos_theta is clamped to [0, 1] (grazing, F = 1,
+ * for cos_theta <= 0). eta <= 0, k < 0 or NaN give 0; eta and k are capped
+ * at 1e6. */
 MF_INLINE mf_real mf_fresnel_conductor(mf_real cos_theta_i, mf_real eta, mf_real k)
 {
-    mf_real c = mf_clamp(MF_FABS(cos_theta_i), MF_R(0.0), MF_R(1.0));
+    mf_real c = mf_clamp(cos_theta_i, MF_R(0.0), MF_R(1.0));
     if (!(eta > MF_R(0.0)) || !(k >= MF_R(0.0)) || !(c == c)) return MF_R(0.0);
     eta = mf_min(eta, MF_R(1e6));
     k = mf_min(k, MF_R(1e6));
@@ -65,8 +70,9 @@ MF_INLINE mf_real mf_ior_from_f0(mf_real f0)
 }
 
 /* Schlick with an edge value: f0 + (f90 - f0)(1 - cos)^5 (f90 = 1 is
- * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular occlusion). */
-MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real cos_theta)
+ * mf_fresnel_schlick; Burley 2012 and Filament use f90 for specular
+ * occlusion). cos_theta is clamped to [0, 1]. */
+MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real cos_theta, mf_real f0, mf_real f90)
 {
     mf_real m = MF_R(1.0) - mf_clamp(cos_theta, MF_R(0.0), MF_R(1.0)), m2;
     if (!(m == m)) m = MF_R(0.0);
@@ -76,9 +82,9 @@ MF_FORCE_INLINE mf_real mf_fresnel_schlick_f90(mf_real f0, mf_real f90, mf_real 
     return f0 + (f90 - f0) * m2 * m2 * m;
 }
 /* Schlick's approximation f0 + (1 - f0)(1 - cos)^5: the f90 = 1 case. */
-MF_FORCE_INLINE mf_real mf_fresnel_schlick(mf_real f0, mf_real cos_theta)
+MF_FORCE_INLINE mf_real mf_fresnel_schlick(mf_real cos_theta, mf_real f0)
 {
-    return mf_fresnel_schlick_f90(f0, MF_R(1.0), cos_theta);
+    return mf_fresnel_schlick_f90(cos_theta, f0, MF_R(1.0));
 }
 
 /* Artist-friendly conductor Fresnel (Gulbrandsen 2014, "Artist Friendly

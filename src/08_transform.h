@@ -21,7 +21,7 @@
 /* 1 if M can transform a microsurface (finite, |det| above the threshold,
  * and |det| > 1/MF_BIG so that 1/det and with it M^-1 stay finite in mf_real:
  * diag(1e-20, 1e-20) passes the relative test but not this one in float). */
-MF_INLINE int mf_transform_valid(mf_mat2 M)
+MF_INLINE int mf_transform_is_valid(mf_mat2 M)
 {
     mf_real n2 = M.m00 * M.m00 + M.m01 * M.m01 + M.m10 * M.m10 + M.m11 * M.m11;
     mf_real det = MF_FABS(mf_mat2_det(M));
@@ -37,7 +37,7 @@ MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
 {
     mf_ndf d = base;
     mf_mat2 P = base.transformed ? mf_mat2_mul(M, base.M) : M;
-    if (!mf_transform_valid(M) || !mf_transform_valid(P)) return base;
+    if (!mf_transform_is_valid(M) || !mf_transform_is_valid(P)) return base;
     if (P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0)) {
         d.transformed = 0;
         d.M = d.Minv = P;
@@ -120,7 +120,7 @@ MF_INLINE mf_result mf_tension_matrix(mf_mat2 rest_edges, mf_mat2 deformed_edges
 {
     mf_mat2 Ri;
     if (!T) return MF_ERROR_INVALID_ARGUMENT;
-    if (!mf_transform_valid(rest_edges) || !mf_transform_valid(deformed_edges)) return MF_ERROR_INVALID_DATA;
+    if (!mf_transform_is_valid(rest_edges) || !mf_transform_is_valid(deformed_edges)) return MF_ERROR_INVALID_DATA;
     Ri = mf_mat2_inverse(rest_edges);
     *T = mf_mat2_mul(deformed_edges, Ri);
     return MF_SUCCESS;

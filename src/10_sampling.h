@@ -17,8 +17,11 @@
  *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
  *             closed-form inverse CDF. */
 
-/* random numbers outside [0, 1] are clamped to it, NaN becomes 0 */
-MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return mf_clamp(u, MF_R(0.0), MF_R(1.0)); }
+/* Random numbers: every sampler takes u in [0, 1] inclusive. 1 is read as
+ * MF_U_MAX, the largest mf_real below 1 (a double u in [1 - 2^-25, 1) rounds
+ * to 1.0f, and the inverse CDFs reach infinite slopes at 1); outside [0, 1]
+ * is clamped, NaN becomes 0. */
+MF_FORCE_INLINE mf_real mf__u01(mf_real u) { return mf_clamp(u, MF_R(0.0), MF_U_MAX); }
 
 /* wm with density D(wm) wm.z. u1 picks the polar angle, u2 the azimuth.
  * Transformed kinds: M^-T applied to a sample of the base (Eq. 4.17-4.18). */

@@ -26,23 +26,6 @@ MF_FORCE_INLINE mf_real mf_brdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     }
 }
 
-MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi);
-
-/* Samples wi for wo; wi.z <= 0 (the zero vector) means no sample. A wi is
- * returned only where mf_brdf_pdf is positive (rounding can put a sampled
- * normal where D underflows to 0, e.g. Beckmann 0.01 at u = (0, 0)). */
-MF_FORCE_INLINE mf_vec3 mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
-{
-    mf_vec3 wm, wi;
-    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    wm = mf_sample_visible(d, wo, u1, u2);
-    wi = mf_reflect(wo, wm);
-    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y) ||
-        !(mf_brdf_pdf(d, wo, wi) > MF_R(0.0)))
-        return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    return wi;
-}
-
 /* Density of mf_brdf_sample per unit solid angle of wi; capped at MF_BIG
  * (near the horizon D_visible / (4 wo.wh) overflows float). */
 MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
@@ -57,14 +40,32 @@ MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
     return mf__cap(p);
 }
 
-/* f(wo, wi) wi.z / pdf(wi) for a wi from mf_brdf_sample: G2 / G1(wo)
- * = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)). */
-MF_FORCE_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+/* Samples wi for wo through the visible normals of wo (Heitz & d'Eon 2014)
+ * and returns the record: pdf = D_wo(wm) / (4 wo.wm) = D(wm) / (4 A(wo))
+ * with A the projected area (Eq. 3.9; mf_brdf_pdf), weight f wi.z / pdf =
+ * G2 / G1(wo) = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)). D and the
+ * two Lambdas are computed once for the three. No sample (MF_LOBE_NONE) when
+ * wo.z <= 0, when the reflection falls below the horizon, or where rounding
+ * puts the normal where D underflows (pdf 0). */
+MF_FORCE_INLINE mf_sample mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
-    mf_real lo;
-    if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
+    mf_sample s = mf__no_sample();
+    mf_vec3 wm, wi;
+    mf_real lo, li, pdf;
+    if (!(wo.z > MF_R(0.0))) return s;
+    wm = mf_sample_visible(d, wo, u1, u2);
+    wi = mf_reflect(wo, wm);
+    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(mf_dot(wo, wm) > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y))
+        return s;
     lo = mf_lambda(d, wo);
-    return (MF_R(1.0) + lo) / (MF_R(1.0) + lo + mf_lambda(d, wi));
+    li = mf_lambda(d, wi);
+    pdf = mf__cap(mf_D(d, wm) / (MF_R(4.0) * mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo)));
+    if (!(pdf > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = (MF_R(1.0) + lo) / (MF_R(1.0) + lo + li);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
 }
 
 /* GGX bounded visible-normal sampling (Eto & Tokuyoshi 2023, "Bounded VNDF
@@ -72,43 +73,56 @@ MF_FORCE_INLINE mf_real mf_brdf_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_ve
  * Dupuy & Benyoub 2023 is shrunk by k (the paper's Eq. 5, with a = min(ax, ay)
  * for anisotropic GGX, Eq. 6) to a cap that still holds every normal whose
  * reflection of wo is above the horizon but far fewer of the others: fewer
- * samples lost (none for isotropic GGX at normal incidence; at alpha 0.5 and
- * 80 degrees 1.4% instead of 7.5%) and a lower-variance estimator (plain /
- * bounded variance of the albedo estimate 2.2 at alpha 0.5, 2.5 to 4 at alpha
- * 1; test_materials). A reflection below the horizon is still possible and
- * counts as no sample. Returns a normal wm (reflect wo on it for wi, as after
- * mf_sample_visible); the zero vector when wo.z <= 0. Any other kind than untransformed GGX falls back to
- * mf_sample_visible, and mf_ggx_brdf_pdf_bounded to mf_brdf_pdf, so the pair
- * stays consistent for every mf_ndf. */
+ * samples lost and a lower-variance estimator (test_materials). A reflection
+ * below the horizon is still possible and counts as no sample. Kinds other
+ * than untransformed GGX take mf_brdf_sample, and mf_brdf_pdf_bounded
+ * mf_brdf_pdf, so the pair stays consistent for every mf_ndf. */
 MF_FORCE_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
 {
     mf_real a = mf_clamp(mf_min(ax, ay), MF_R(0.0), MF_R(1.0)), a2 = a * a;
     mf_real s = MF_R(1.0) + MF_SQRT(wo.x * wo.x + wo.y * wo.y), s2 = s * s;
     return (MF_R(1.0) - a2) * s2 / (s2 + a2 * wo.z * wo.z);   /* Eq. 5 */
 }
-MF_FORCE_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+/* 1 when the bounded sampler applies to d (untransformed GGX) */
+MF_FORCE_INLINE int mf__bounded_applies(const mf_ndf *d) { return d->type == MF_NDF_GGX && !d->transformed; }
+/* The bounded pdf's denominator 2 (k wo.z + t), t = |(ax wo.x, ay wo.y, wo.z)|
+ * (Listing 2): pdf(wi) = D(wm) / that. */
+MF_FORCE_INLINE mf_real mf__ggx_bounded_den(const mf_ndf *d, mf_vec3 wo)
 {
-    mf_vec3 h;
-    if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
-    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf_clamp(u1, MF_R(0.0), MF_R(1.0)), mf_clamp(u2, MF_R(0.0), MF_R(1.0)),
-                                  mf__ggx_bounded_k(d->ax, d->ay, wo));
-    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+    mf_real t = MF_SQRT(d->ax * d->ax * wo.x * wo.x + d->ay * d->ay * wo.y * wo.y + wo.z * wo.z);
+    return MF_R(2.0) * (mf__ggx_bounded_k(d->ax, d->ay, wo) * wo.z + t);
 }
-/* Density per unit solid angle of wi = reflect(wo, wm) for wm from
- * mf_ggx_sample_visible_bounded (paper Listing 2): D(wm) / (2 (k wo.z + t)),
- * t = |(ax wo.x, ay wo.y, wo.z)|; plain VNDF sampling is the case k = 1. */
-MF_FORCE_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
+/* The record of a bounded sample: pdf = D(wm) / (2 (k wo.z + t)), weight
+ * f wi.z / pdf = G2 (k wo.z + t) / (2 wo.z). */
+MF_FORCE_INLINE mf_sample mf_brdf_sample_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+{
+    mf_sample s = mf__no_sample();
+    mf_vec3 h, wi;
+    mf_real den, pdf;
+    if (!mf__bounded_applies(d)) return mf_brdf_sample(d, wo, u1, u2);
+    if (!(wo.z > MF_R(0.0))) return s;
+    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf__u01(u1), mf__u01(u2), mf__ggx_bounded_k(d->ax, d->ay, wo));
+    h = mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
+    wi = mf_reflect(wo, h);
+    if (!(wi.z > MF_R(0.0)) || !(mf_dot(wo, h) > MF_R(0.0))) return s;
+    den = mf__ggx_bounded_den(d, wo);
+    pdf = mf_min(mf_ggx_D(d->ax, d->ay, h) / den, MF_BIG);
+    if (!(pdf > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = mf_min(mf__ggx_G2(d->ax, d->ay, wo, wi) * den / (MF_R(4.0) * wo.z), MF_BIG);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
+}
+/* Density of mf_brdf_sample_bounded per unit solid angle of wi. */
+MF_FORCE_INLINE mf_real mf_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
     mf_vec3 wh;
-    mf_real t, k;
-    if (d->type != MF_NDF_GGX || d->transformed) return mf_brdf_pdf(d, wo, wi);
+    if (!mf__bounded_applies(d)) return mf_brdf_pdf(d, wo, wi);
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     wh = mf_normalize(mf_add(wo, wi));
     if (!(mf_dot(wo, wh) > MF_R(0.0))) return MF_R(0.0);
-    t = MF_SQRT(d->ax * d->ax * wo.x * wo.x + d->ay * d->ay * wo.y * wo.y + wo.z * wo.z);
-    k = mf__ggx_bounded_k(d->ax, d->ay, wo);
-    return mf_min(mf_ggx_D(d->ax, d->ay, wh) / (MF_R(2.0) * (k * wo.z + t)), MF_BIG);
+    return mf_min(mf_ggx_D(d->ax, d->ay, wh) / mf__ggx_bounded_den(d, wo), MF_BIG);
 }
 
 /* Hemispherical averages of the Fresnel terms, F_avg = 2 int_0^1 F(mu) mu dmu

@@ -12,13 +12,13 @@
  *                h = normalize(wo + e wi), facing wo's side  (Eqs. 16, 21)
  * with G2 = 1 / (1 + Lambda(wo) + Lambda(wi)) (the height-correlated form,
  * each direction's masking on its own side). The 1 / e^2 = (eta_o / eta_i)^2
- * factor is radiance transport: a path tracer following camera paths uses f
- * as it is. Importance transport (light tracing, photon mapping) omits it:
- * multiply the transmitted value by e^2. Reciprocity holds in the generalized
+ * factor is radiance transport (MF_RADIANCE: a path tracer following camera
+ * paths); importance transport (MF_IMPORTANCE: light tracing, photon
+ * mapping) omits it. Reciprocity holds in the generalized
  * form f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2.
  * Sampling draws visible normals of wo's side (Heitz & d'Eon 2014), then
  * reflection with probability F(wo.h) and refraction otherwise (so the weight
- * f |cos| / pdf is G2 / G1(wo), times 1 / e^2 when transmitted).
+ * f |cos| / pdf is G2 / G1(wo), times 1 / e^2 when transmitted radiance).
  * A wo below the surface is handled by inverting every direction (a height
  * field seen from below, mirrored through the origin, has the same slope
  * distribution, so this is exact for every kind, non-centered LEADR
@@ -29,15 +29,18 @@
  * delta limit uses mf_fresnel_dielectric with mf_reflect / mf_refract.
  * Thin-walled sheets (two interfaces) are not modelled here. */
 
-/* Refraction of wi (pointing away, on n's side) through the unit normal n;
- * eta = n_transmitted / n_incident (as mf_fresnel_dielectric). *wt: unit, on
- * the other side. Returns 0 on total internal reflection or degenerate input
- * (then *wt is the zero vector). Snell: sin t = sin i / eta. */
+/* Refraction of wi (unit, pointing away from the surface) through the unit
+ * normal n; eta = index on the side opposite n over index on n's side (the
+ * library's convention with n for +z). wi on either side: below n
+ * (wi.n < 0) the function uses -n and 1 / eta. *wt: unit, on the other side
+ * from wi. Returns 1 when refracted, 0 on total internal reflection or
+ * degenerate input (then *wt is the zero vector). Snell: sin t = sin i / e. */
 MF_FORCE_INLINE int mf_refract(mf_vec3 wi, mf_vec3 n, mf_real eta, mf_vec3 *wt)
 {
     mf_real ci = mf_dot(wi, n), s2t, ct;
     *wt = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(ci >= MF_R(0.0)) || !(ci <= MF_R(1.0) + MF_R(1e-3))) return 0;
+    if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(MF_FABS(ci) <= MF_R(1.0) + MF_R(1e-3))) return 0;
+    if (ci < MF_R(0.0)) { n = mf_scale(n, MF_R(-1.0)); ci = -ci; eta = MF_R(1.0) / eta; }
     ci = mf_min(ci, MF_R(1.0));
     s2t = (MF_R(1.0) - ci * ci) / (eta * eta);
     if (!(s2t < MF_R(1.0))) return 0;
@@ -102,14 +105,18 @@ MF_FORCE_INLINE int mf__dielectric_prep(mf_vec3 *wo, mf_vec3 *wi, mf_real *eta, 
     return *den > MF_R(0.0);
 }
 
-MF_FORCE_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+/* f(wo, wi) in the given transport mode: MF_RADIANCE carries the 1 / e^2
+ * factor on transmission, MF_IMPORTANCE does not (its transmitted value is
+ * the radiance one times e^2; the adjoint BSDF of Veach 1997, Sec. 5.2). */
+MF_FORCE_INLINE mf_real mf_dielectric_bsdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
 {
     mf_vec3 h;
     mf_real F, oh, den, g;
     if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return MF_R(0.0);
     g = mf_D(d, h) * mf__dielectric_G2(d, wo, wi) / wo.z;   /* two divisions: no underflow of wo.z wi.z */
     if (wi.z > MF_R(0.0)) return mf_min(F * g / (MF_R(4.0) * wi.z), MF_BIG);
-    return mf_min((MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z * eta * eta), MF_BIG);
+    g = (MF_R(1.0) - F) * g * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z);
+    return mf_min(mode == MF_IMPORTANCE ? g : g / (eta * eta), MF_BIG);
 }
 
 /* Density of mf_dielectric_sample per unit solid angle of wi (either side). */
@@ -124,36 +131,53 @@ MF_FORCE_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
 }
 
 /* Samples wi (reflected or transmitted) for wo on either side from three
- * uniform numbers; the zero vector means no sample. */
-MF_FORCE_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real u1, mf_real u2, mf_real u3)
+ * uniform numbers (u1, u2 the visible normal of wo's side, u3 the choice
+ * between reflection, with probability F(wo.m), and refraction) and returns
+ * the record: pdf as mf_dielectric_pdf, weight f |wi.z| / pdf = G2 / G1(wo)
+ * = (1 + Lambda(wo)) G2 (LEADR's tilted mean surface: A(wo) G2 / wo.z),
+ * divided by e^2 when transmitted in radiance transport. */
+MF_FORCE_INLINE mf_sample mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
+                                               mf_real u1, mf_real u2, mf_real u3)
 {
-    mf_vec3 m, wi, zero = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    mf_real s = MF_R(1.0), F;
-    if (!mf__dielectric_ok(wo, eta)) return zero;
-    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; s = MF_R(-1.0); }
+    mf_sample s = mf__no_sample();
+    mf_vec3 m, wi;
+    mf_real sg = MF_R(1.0), F, c, lo, li, A, p, dm, w;
+    int refl;
+    if (!mf__dielectric_ok(wo, eta)) return s;
+    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; sg = MF_R(-1.0); }
     m = mf_sample_visible(d, wo, u1, u2);
-    if (!(m.z > MF_R(0.0)) || !(mf_dot(wo, m) > MF_R(0.0))) return zero;
-    F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
-    if (u3 < F) {
+    c = mf_dot(wo, m);
+    if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) return s;
+    F = mf_fresnel_dielectric(c, eta);
+    refl = mf__u01(u3) < F;
+    if (refl) {
         wi = mf_reflect(wo, m);
-        if (!(wi.z > MF_R(0.0))) return zero;
+        if (!(wi.z > MF_R(0.0))) return s;
     } else {
-        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return zero;
+        mf_real x;
+        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return s;
+        x = mf_dot(wi, m) + c / eta;
+        if (!(x * x > MF_R(0.0))) return s;
     }
-    return mf_scale(wi, s);
-}
-
-/* f |wi.z| / pdf for a wi from mf_dielectric_sample: G2 / G1(wo) = (1 +
- * Lambda(wo)) G2, divided by e^2 when transmitted (radiance transport);
- * for LEADR moments (a tilted mean surface) the ratio itself. */
-MF_FORCE_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
-{
-    mf_real w;
-    if (d->type == MF_NDF_LEADR) {   /* visible normals of a tilted mean surface: the ratio itself */
-        w = mf_dielectric_pdf(d, wo, wi, eta);
-        return w > MF_R(0.0) ? mf_min(mf_dielectric_bsdf(d, wo, wi, eta) * MF_FABS(wi.z) / w, MF_BIG) : MF_R(0.0);
+    /* pdf: D_wo(m) = c D(m) / A(wo), times F / (4 c) or (1 - F) |wi.m| / (wi.m + c / e)^2 */
+    lo = mf_lambda(d, wo);
+    li = mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
+    A = mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo);
+    dm = mf_D(d, m);
+    if (refl) p = F * dm / (MF_R(4.0) * A);
+    else {
+        mf_real x = mf_dot(wi, m) + c / eta;
+        p = (MF_R(1.0) - F) * c * dm / A * MF_FABS(mf_dot(wi, m)) / (x * x);
     }
-    if (!mf__dielectric_setup(&wo, &wi, &eta)) return MF_R(0.0);
-    w = (MF_R(1.0) + mf_lambda(d, wo)) * mf__dielectric_G2(d, wo, wi);
-    return wi.z > MF_R(0.0) ? w : w / (eta * eta);
+    p = mf_min(p, MF_BIG);
+    if (!(p > MF_R(0.0))) return s;
+    /* f |wi.z| / pdf = A G2 / wo.z, G2 = 1 / (1 + lo + li) (the BSDF divides
+     * by wo.z, the visible normals by the projected area A) */
+    w = A / (wo.z * (MF_R(1.0) + lo + li));
+    if (!refl && mode != MF_IMPORTANCE) w /= eta * eta;
+    s.wi = mf_scale(wi, sg);
+    s.pdf = p;
+    s.weight = mf_min(w, MF_BIG);
+    s.lobe = refl ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
 }

@@ -567,8 +567,8 @@ typedef struct mf_ltc_fit_result {
     mf_real error;       /* the fitted L3 error estimate */
     mf_real params[3];   /* m11, m22, m13: pass as guess to the next fit */
 } mf_ltc_fit_result;
-MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_real cos_theta_o,
-                           const mf_real *guess, mf_ltc_fit_result *out);
+MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx,
+                           mf_real cos_theta_o, const mf_real *guess);
 
 /* A table of fits over view angle and roughness for a distribution family:
  * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
@@ -768,8 +768,8 @@ static mf_real mf__nelder_mead(const mf__fit_ctx *c, mf_real *x, mf_real step, i
     }
 }
 
-MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_real cos_theta_o,
-                           const mf_real *guess, mf_ltc_fit_result *out)
+MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx,
+                           mf_real cos_theta_o, const mf_real *guess)
 {
     mf__fit_ctx c;
     mf_real ct, st, sum = MF_R(0.0), fres = MF_R(0.0), p[3];
@@ -792,7 +792,7 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
         for (j = 0; j < 8 * n1; ++j) {
             mf_real u1 = ((mf_real)i + MF_R(0.5)) / (mf_real)(8 * n1), u2 = ((mf_real)j + MF_R(0.5)) / (mf_real)(8 * n1), f, pdf, w;
             mf_vec3 wi, h;
-            wi = brdf ? mf__sample_cosine(u1, u2) : mf_brdf_sample(d, c.wo, u1, u2);
+            wi = brdf ? mf__sample_cosine(u1, u2) : mf_brdf_sample(d, c.wo, u1, u2).wi;
             f = mf__fit_f(&c, wi);
             pdf = mf__fit_pdf(&c, wi);
             w = pdf > MF_R(0.0) ? f / pdf : MF_R(0.0);
@@ -880,7 +880,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
         for (i = 0; i < n_theta; ++i) {
             mf_ltc_fit_result r;
             float *e = t->data + 6 * ((size_t)j * (size_t)n_theta + (size_t)i);
-            mf_result res = mf_ltc_fit(&d, 0, 0, mf__ltc_grid_cos(i, n_theta), prev, &r);
+            mf_result res = mf_ltc_fit(&r, &d, 0, 0, mf__ltc_grid_cos(i, n_theta), prev);
             if (res != MF_SUCCESS) { mf_ltc_table_release(t); return res; }
             e[0] = (float)r.inv[0]; e[1] = (float)r.inv[1]; e[2] = (float)r.inv[2]; e[3] = (float)r.inv[3];
             e[4] = (float)r.albedo; e[5] = (float)r.fresnel;

@@ -142,7 +142,7 @@ MF__LTC_RARE mf_real mf__ellipse_clipped(mf_vec3 c, mf_vec3 u, mf_vec3 v)
     mf_vec3 a, b1, b2, e1, e2, x0, x1;
     mf_real pm[9], ff = mf__ellipse_cone(c, u, v, &a, pm), s11, s12, s22, th, A, B, t1, t2, X, Y, R, ph, be, f0, f1, k, sum, j0;
     if (!(ff > MF_R(0.0))) return MF_R(0.0);
-    mf_frame(a, &b1, &b2);
+    { mf_basis fr_ = mf_basis_from_normal(a); b1 = fr_.t; b2 = fr_.b; }
     /* P - p3 I restricted to the plane normal to the axis: eigenvalues p1 - p3, p2 - p3 */
 #define MF__PQ(p, q) ((p).x * (pm[0] * (q).x + pm[3] * (q).y + pm[4] * (q).z) + (p).y * (pm[3] * (q).x + pm[1] * (q).y + pm[5] * (q).z) + \
                       (p).z * (pm[4] * (q).x + pm[5] * (q).y + pm[2] * (q).z))
@@ -212,7 +212,7 @@ MF_INLINE mf_real mf_ltc_integrate_disk(const mf_ltc *l, mf_vec3 center, mf_vec3
     mf_real len = MF_SQRT(mf_dot(normal, normal));
     if (!(len > MF_R(0.0)) || !(len < MF_BIG) || !(radius > MF_R(0.0)) || !(radius < MF_BIG)) return MF_R(0.0);
     n = mf_scale(normal, MF_R(1.0) / len);
-    mf_frame(n, &t, &b);
+    { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
     if (mf_dot(mf_cross(t, b), n) < MF_R(0.0)) b = mf_scale(b, MF_R(-1.0));   /* t x b = n */
     return mf_ltc_integrate_ellipse(l, center, mf_scale(t, radius), mf_scale(b, radius), two_sided);
 }

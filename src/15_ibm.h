@@ -18,8 +18,8 @@
  *     mf_ibm_build(&ibm, normals_xyz, 2048, 2048, 0.01f);   // check the mf_result
  *     mf_footprint fp = { u, v, dudx, dvdx, dudy, dvdy };
  *     mf_real f = mf_ibm_brdf(&ibm, &fp, wo, wi);           // no Fresnel, no cosine
- *     mf_vec3 wi2 = mf_ibm_sample(&ibm, &fp, wo, u1, u2, u3, u4);   // z <= 0: none
- *     mf_real pdf, f2 = mf_ibm_brdf_pdf(&ibm, &fp, wo, wi2, &pdf);  // both, one query
+ *     mf_sample s = mf_ibm_sample(&ibm, &fp, wo, u1, u2, u3, u4);  // s.wi, s.pdf, s.weight
+ *     mf_real pdf, f2 = mf_ibm_brdf_and_pdf(&ibm, &fp, wo, wi, &pdf);  // both, one query
  *     mf_ibm_release(&ibm);
  *
  * The map's normals and wo, wi share the shading frame: x along u (texel
@@ -271,7 +271,7 @@ MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo
 MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
 
 /* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
-MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
+MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
 
 /* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
  * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
@@ -279,7 +279,7 @@ MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec
  * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
  * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
  * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
-MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
                                 mf_real u3, mf_real u4);
 
 /* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
@@ -291,9 +291,10 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
  * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
  * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
- * MF_IBM_MAX_RES. mf_ibm_build_ex also takes the resolution b (0: Eq. 5.14)
- * and the cut in sigmas (0: 3, else in [MF_IBM_MIN_CUT, 10]: a cut that
- * rounds to 0 in float would not reload); the neighbourhood radius r grows with b so
+ * MF_IBM_MAX_RES. mf_ibm_build_ex also takes options (NULL or all-zero:
+ * the defaults): the resolution b (0: Eq. 5.14) and the cut in sigmas (0: 3,
+ * else in [MF_IBM_MIN_CUT, 10]: a cut that rounds to 0 in float would not
+ * reload); the neighbourhood radius r grows with b so
  * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
  * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
  * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
@@ -302,23 +303,28 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
  * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
  * allocated on failure, and *ibm is zeroed. Cost: two passes over the
  * normals (binning in 8 x 8 tiles, then a counting sort in Morton order)
- * and the kd-tree tops; a 2048 x 2048 map at alpha 0.01 in 55-85 ms on one
- * core of the README's machine (flakes and a smooth map, `make bench`). */
+ * and the kd-tree tops (timings: docs/PERFORMANCE.md, `make bench`). */
+typedef struct mf_ibm_options {
+    int resolution;          /* bins per axis b; 0: Eq. 5.14 */
+    mf_real cut_sigmas;      /* the lobe's cut in sigmas; 0: 3 */
+} mf_ibm_options;
 MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
 MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                int resolution, mf_real cut_sigmas);
+                                const mf_ibm_options *options);
 MFDEF void mf_ibm_release(mf_ibm *ibm);
 /* Bytes held: the single integer array (ibm->words * 4). */
 MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
-/* Save and load (no stdio): mf_ibm_save copies the integer array (native
- * byte order) to buf when cap is large enough and returns the bytes it needs
- * (0 for an empty map). mf_ibm_load copies such a buffer (any alignment) into
+/* Save and load (no stdio): mf_ibm_save writes the bytes the map needs to
+ * *bytes and copies the integer array (native byte order) to buf when cap is
+ * large enough. buf NULL: a size query (MF_SUCCESS); cap too small:
+ * MF_ERROR_BUFFER_TOO_SMALL, nothing written; an empty map or NULL:
+ * MF_ERROR_INVALID_ARGUMENT, *bytes = 0. mf_ibm_load copies such a buffer (any alignment) into
  * a new map after validating everything a query reads: magic, version, sizes,
  * a checksum, the index, every texel position (in range, sorted, each texel
  * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
  * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
  * mf_ibm_set_shadowing is not saved: set it again after loading. */
-MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap);
+MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes);
 MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 /* Area of the unit square where a linear function is >= 0, from its values
  * v[0..3] at the corners (0,0), (1,0), (1,1), (0,1): the triangle, trapezoid
@@ -2063,7 +2069,7 @@ MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo,
     return pdf;
 }
 
-MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
+MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
 {
     mf_real tmp = MF_R(0.0);
     if (!pdf) pdf = &tmp;
@@ -2072,17 +2078,16 @@ MF_COLD mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec
     return mf__ibm_lobes(ibm, f, wo, wi, 1, pdf);
 }
 
-MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
-                                mf_real u3, mf_real u4)
+/* the direction of mf_ibm_sample (the zero vector: none) */
+MF_INLINE mf_vec3 mf__ibm_sample_dir(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                     mf_real u3, mf_real u4)
 {
     mf_vec3 none = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0)), t, tt, tb, o, m, wi, h;
     mf__ibm_fp p;
     int tx, ty, j, dx, dy, r;
     if (!ibm || !ibm->data || !(wo.z > MF_R(0.0))) return none;
     mf__ibm_footprint(ibm, f, &p);
-    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0)); u2 = mf_clamp(u2, MF_R(0.0), MF_R(1.0));
-    if (!(u1 == u1)) u1 = MF_R(0.5);
-    if (!(u2 == u2)) u2 = MF_R(0.5);
+    u1 = mf__u01(u1); u2 = mf__u01(u2);
     if (p.mode == MF__IBM_NONE) return none;
     if (p.mode == MF__IBM_POINT) { tx = p.tx; ty = p.ty; }
     else if (p.mode == MF__IBM_GLOBAL) {
@@ -2098,7 +2103,7 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
     j = mf_ibm_texel_bin(ibm, tx, ty);
     t = mf_ibm_bin_normal(ibm, j);
     if (!(mf_dot(wo, t) > MF_R(0.0))) return none;
-    mf_frame(t, &tt, &tb);
+    { mf_basis fr_ = mf_basis_from_normal(t); tt = fr_.t; tb = fr_.b; }
     o = mf_vec3_make(mf_dot(wo, tt), mf_dot(wo, tb), mf_dot(wo, t));
     m = mf_beckmann_sample_visible(ibm->alpha, ibm->alpha, o, u3, u4);
     m = mf_add(mf_add(mf_scale(tt, m.x), mf_scale(tb, m.y)), mf_scale(t, m.z));
@@ -2118,6 +2123,21 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
             return none;
     }
     return wi;
+}
+MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                mf_real u3, mf_real u4)
+{
+    mf_sample s = mf__no_sample();
+    mf_real fv, pdf = MF_R(0.0);
+    mf_vec3 wi = mf__ibm_sample_dir(ibm, f, wo, u1, u2, u3, u4);
+    if (!(wi.z > MF_R(0.0))) return s;
+    fv = mf_ibm_brdf_and_pdf(ibm, f, wo, wi, &pdf);
+    if (!(pdf > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = mf_min(fv * wi.z / pdf, MF_BIG);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
 }
 /* @impl */
 /* ---- Inverse Bin Map ---- */
@@ -2265,8 +2285,10 @@ static void mf__ibm_resolution(mf_real alpha, mf_real cut, int resolution, int *
 }
 
 MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                int resolution, mf_real cut_sigmas)
+                                const mf_ibm_options *options)
 {
+    int resolution = options ? options->resolution : 0;
+    mf_real cut_sigmas = options ? options->cut_sigmas : MF_R(0.0);
     mf_ibm L;
     size_t n, bins, words, i, ncodes, bmw;
     unsigned int *data = 0, *cur = 0, *st = 0, *list, *bmap = 0, *t32 = 0, start = 0u, bad = 0u, none;
@@ -2496,7 +2518,7 @@ MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int wid
 
 MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha)
 {
-    return mf_ibm_build_ex(ibm, normals_xyz, width, height, flake_alpha, 0, MF_R(0.0));
+    return mf_ibm_build_ex(ibm, normals_xyz, width, height, flake_alpha, 0);
 }
 
 MFDEF void mf_ibm_release(mf_ibm *ibm)
@@ -2511,17 +2533,21 @@ MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm)
     return ibm && ibm->data ? ibm->words * sizeof(unsigned int) : 0u;
 }
 
-MFDEF size_t mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap)
+MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes)
 {
-    size_t bytes, i;
-    if (!ibm || !ibm->data) return 0u;
-    bytes = ibm->words * sizeof(unsigned int);
-    if (buf && cap >= bytes) {
+    size_t n, i;
+    if (bytes) *bytes = 0u;
+    if (!ibm || !ibm->data || !bytes) return MF_ERROR_INVALID_ARGUMENT;
+    n = ibm->words * sizeof(unsigned int);
+    *bytes = n;
+    if (!buf) return MF_SUCCESS;
+    if (cap < n) return MF_ERROR_BUFFER_TOO_SMALL;
+    {
         const unsigned char *s = (const unsigned char *)ibm->data;
         unsigned char *d = (unsigned char *)buf;
-        for (i = 0; i < bytes; ++i) d[i] = s[i];
+        for (i = 0; i < n; ++i) d[i] = s[i];
     }
-    return bytes;
+    return MF_SUCCESS;
 }
 
 /* every check a query relies on; 1 if the array is a valid map */

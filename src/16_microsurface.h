@@ -53,15 +53,14 @@ typedef unsigned long long mf_u64;
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
 
+/* Options of mf_microsurface_generate_ex; all-zero (or NULL) means the defaults. */
 typedef struct mf_microsurface_options {
-    int iterations;          /* re-matching iterations (the paper uses 500) */
-    mf_u64 seed;
-    mf_real threshold;       /* Schwarz threshold on eps(x, y), default MF_MICROSURFACE_THRESHOLD */
+    mf_real threshold;       /* Schwarz threshold on eps(x, y); 0: MF_MICROSURFACE_THRESHOLD */
     mf_real max_rematch;     /* at most this fraction of the cells, those of largest eps, is */
                              /* re-matched per iteration; 1: all above the threshold, as in */
                              /* the paper; 0 (default): 0.5 for light tails down to 0.25 for */
                              /* heavy ones (see the implementation) */
-    int stratified;          /* 1: jittered stratified random numbers for Q_m (default); 0: independent */
+    int independent;         /* 0: jittered stratified random numbers for Q_m; 1: independent */
     mf_progress_fn progress; /* called after each iteration with (done, iterations, ctx); may be NULL */
     void *ctx;
     mf_real *gradients;      /* optional output, size*size*2: the final target gradient field, */
@@ -80,11 +79,11 @@ typedef struct mf_microsurface_stats {
     mf_real rms_triangle;    /* RMS of the triangle slopes of the result */
 } mf_microsurface_stats;
 
-MFDEF void mf_microsurface_options_default(mf_microsurface_options *o);
 MFDEF mf_result mf_microsurface_generate(const mf_ndf *d, int size, int iterations, mf_u64 seed,
                                          mf_real *heights);
-MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_microsurface_options *o,
-                                            mf_real *heights, mf_microsurface_stats *stats);
+MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, int iterations, mf_u64 seed,
+                                            const mf_microsurface_options *options, mf_real *heights,
+                                            mf_microsurface_stats *stats);
 /* Step 3 alone: the periodic height field (mean 0) whose triangles and
  * central differences best fit per-point slopes gradients_xy (size*size*2,
  * x and y interleaved) in the least-squares sense; the discrete Poisson
@@ -112,12 +111,13 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
  * surface then spans more squares than that). */
 #define MF_FACET_MIRROR 0
 #define MF_FACET_LAMBERT 1
+/* A measurement's configuration; all-zero means the defaults. */
 typedef struct mf_gonio_config {
-    mf_vec3 wi;              /* unit, toward the light, wi.z > 0 */
-    int facet;               /* MF_FACET_MIRROR or MF_FACET_LAMBERT */
-    mf_real albedo;          /* power kept at each bounce, [0, 1] (default 1) */
-    int rays;                /* default 1000000 */
-    int max_bounces;         /* default 100 */
+    mf_vec3 wi;              /* toward the light, wi.z > 0; zero: (0, 0, 1) */
+    int facet;               /* MF_FACET_MIRROR (0) or MF_FACET_LAMBERT */
+    mf_real absorption;      /* power lost at each bounce, [0, 1]; 0: none */
+    int rays;                /* 0: 1000000 */
+    int max_bounces;         /* 0: 100 */
     mf_u64 seed;
     mf_progress_fn progress; /* called about 100 times with (rays done, rays, ctx); may be NULL */
     void *ctx;
@@ -136,7 +136,6 @@ typedef struct mf_gonio {
     mf_real mean_bounces;    /* mean number of bounces per ray */
 } mf_gonio;
 
-MFDEF void mf_gonio_config_default(mf_gonio_config *c);
 /* Allocates a sensor of `rings` rings (1..1024) with zero readings. */
 MFDEF mf_result mf_gonio_init(mf_gonio *g, int rings);
 MFDEF void mf_gonio_release(mf_gonio *g);
@@ -680,20 +679,6 @@ static void mf__ms_rematch(mf__ms *m, int k, mf__pcg *rng)
     }
 }
 
-MFDEF void mf_microsurface_options_default(mf_microsurface_options *o)
-{
-    if (!o) return;
-    o->iterations = 100;
-    o->seed = 1;
-    o->threshold = MF_MICROSURFACE_THRESHOLD;
-    o->max_rematch = MF_R(0.0);
-    o->stratified = 1;
-    o->progress = 0;
-    o->ctx = 0;
-    o->gradients = 0;
-    o->schwarz = 0;
-}
-
 /* 1 if d can be sampled and evaluated: finite roughness, a finite unit
  * sample with z > 0 and D > 0 there, and no mean slope (LEADR) */
 static int mf__ms_ndf_ok(const mf_ndf *d)
@@ -701,7 +686,7 @@ static int mf__ms_ndf_ok(const mf_ndf *d)
     mf_vec3 m;
     mf_real v;
     if (!(d->ax > MF_R(0.0) && d->ax < MF_BIG) || !(d->ay > MF_R(0.0) && d->ay < MF_BIG)) return 0;
-    if (d->transformed && !mf_transform_valid(d->M)) return 0;
+    if (d->transformed && !mf_transform_is_valid(d->M)) return 0;
     if (d->type == MF_NDF_LEADR && (d->p.leadr.mx != MF_R(0.0) || d->p.leadr.my != MF_R(0.0))) return 0;
     m = mf_sample_D(d, MF_R(0.3), MF_R(0.2));
     v = mf_D(d, m);
@@ -709,9 +694,12 @@ static int mf__ms_ndf_ok(const mf_ndf *d)
            v > MF_R(0.0) && v < MF_BIG;
 }
 
-MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_microsurface_options *o,
-                                            mf_real *heights, mf_microsurface_stats *stats)
+MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, int iterations, mf_u64 seed,
+                                            const mf_microsurface_options *options, mf_real *heights,
+                                            mf_microsurface_stats *stats)
 {
+    mf_microsurface_options oz;
+    const mf_microsurface_options *o = options;
     mf__ms m;
     mf__pcg rng;
     int n = size, it, k = 0, x, y;
@@ -722,23 +710,24 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
         stats->below = stats->eps_mean = stats->eps_median = MF_R(0.0);
         stats->rms_target = stats->rms_central = stats->rms_triangle = MF_R(0.0);
     }
-    if (!d || !o || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
-        o->iterations < 0 || o->iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
+    if (!o) { memset(&oz, 0, sizeof oz); o = &oz; }
+    if (!d || !heights || !mf__pow2(size) || size < MF_MICROSURFACE_MIN_SIZE || size > MF_MICROSURFACE_MAX_SIZE ||
+        iterations < 0 || iterations > MF_MICROSURFACE_MAX_ITERATIONS || !(o->threshold >= MF_R(0.0) && o->threshold < MF_BIG) ||
         !(o->max_rematch >= MF_R(0.0) && o->max_rematch <= MF_R(1.0)) || !mf__ms_ndf_ok(d))
         return MF_ERROR_INVALID_ARGUMENT;
-    thr = (double)o->threshold;
+    thr = o->threshold > MF_R(0.0) ? (double)o->threshold : (double)MF_MICROSURFACE_THRESHOLD;
     mf__ms_zero(&m);
     if (!mf__ms_alloc(&m, n)) { mf__ms_free(&m); return MF_ERROR_OUT_OF_MEMORY; }
     n2 = m.n2;
     mf__fft_twiddles(m.fc, m.fs, n);
     /* Q_m: n^2 slopes drawn with density D cos (= the slope density P22),
      * stratified on an n x n grid of (u1, u2) when asked; then shuffled onto the grid */
-    mf__pcg_seed(&rng, o->seed, 0x6d66u);
+    mf__pcg_seed(&rng, seed, 0x6d66u);
     for (y = 0; y < n; ++y)
         for (x = 0; x < n; ++x) {
             double u1 = mf__pcg_u01(&rng), u2 = mf__pcg_u01(&rng), sxv, syv, l;
             mf_vec3 w;
-            if (o->stratified) { u1 = ((double)x + u1) / (double)n; u2 = ((double)y + u2) / (double)n; }
+            if (!o->independent) { u1 = ((double)x + u1) / (double)n; u2 = ((double)y + u2) / (double)n; }
             w = mf_sample_D(d, mf__u01_real(u1), mf__u01_real(u2));
             i = (size_t)y * (size_t)n + (size_t)x;
             if (w.z > MF_R(0.0)) {
@@ -777,11 +766,11 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
     }
     /* Algorithm 1: integrate, then (compute errors, re-match, integrate) per iteration */
     mf__ms_integrate(&m);
-    for (it = 0; it < o->iterations; ++it) {
+    for (it = 0; it < iterations; ++it) {
         k = mf__ms_errors(&m, thr, cap);
         mf__ms_rematch(&m, k, &rng);
         mf__ms_integrate(&m);
-        if (o->progress) o->progress(it + 1, o->iterations, o->ctx);
+        if (o->progress) o->progress(it + 1, iterations, o->ctx);
     }
     k = mf__ms_errors(&m, thr, 1.0);
     for (i = 0; i < n2; ++i) heights[i] = (mf_real)m.h[i];
@@ -802,8 +791,8 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
                 acc[2] += 0.5 * (fx * fx + fy * fy + bx * bx + by * by);
                 acc[3] += m.eps[i];
             }
-        stats->iterations = o->iterations;
-        stats->rematched = o->iterations > 0 ? k : 0;
+        stats->iterations = iterations;
+        stats->rematched = iterations > 0 ? k : 0;
         stats->below = (mf_real)(1.0 - (double)k / (double)n2);
         stats->eps_mean = (mf_real)(acc[3] / (double)n2);
         stats->rms_target = (mf_real)mf__sqrt_d(acc[0] / (2.0 * (double)n2));
@@ -818,11 +807,7 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, const mf_
 
 MFDEF mf_result mf_microsurface_generate(const mf_ndf *d, int size, int iterations, mf_u64 seed, mf_real *heights)
 {
-    mf_microsurface_options o;
-    mf_microsurface_options_default(&o);
-    o.iterations = iterations;
-    o.seed = seed;
-    return mf_microsurface_generate_ex(d, size, &o, heights, 0);
+    return mf_microsurface_generate_ex(d, size, iterations, seed, 0, heights, 0);
 }
 
 MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size, mf_real *heights)
@@ -853,19 +838,6 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
 }
 
 /* ---- The virtual gonioreflectometer ---- */
-
-MFDEF void mf_gonio_config_default(mf_gonio_config *c)
-{
-    if (!c) return;
-    c->wi = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    c->facet = MF_FACET_MIRROR;
-    c->albedo = MF_R(1.0);
-    c->rays = 1000000;
-    c->max_bounces = 100;
-    c->seed = 1;
-    c->progress = 0;
-    c->ctx = 0;
-}
 
 MFDEF void mf_gonio_release(mf_gonio *g)
 {
@@ -1105,19 +1077,25 @@ static double mf__wrap(double x, int n)
     return x;
 }
 
-MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, const mf_gonio_config *c)
+MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, const mf_gonio_config *config)
 {
+    mf_gonio_config cz;
+    const mf_gonio_config *c = &cz;
     mf__tracer T;
     mf__pcg rng;
     double *h, *top, *acc, e1 = 0.0, em = 0.0, el = 0.0, bounces = 0.0, zmax = -1e300;
     size_t i, n2;
     int n = size, r, x, y, leak = 0, lost = 0, every;
     mf_vec3 wi;
-    if (!g || !g->ring_z || !g->first || !heights || !c || !mf__pow2(size) || size < 4 || size > MF_MICROSURFACE_MAX_SIZE)
+    if (!g || !g->ring_z || !g->first || !heights || !mf__pow2(size) || size < 4 || size > MF_MICROSURFACE_MAX_SIZE)
         return MF_ERROR_INVALID_ARGUMENT;
+    if (config) cz = *config; else memset(&cz, 0, sizeof cz);
+    if (cz.wi.x == MF_R(0.0) && cz.wi.y == MF_R(0.0) && cz.wi.z == MF_R(0.0)) cz.wi.z = MF_R(1.0);
+    if (cz.rays == 0) cz.rays = 1000000;
+    if (cz.max_bounces == 0) cz.max_bounces = 100;
     wi = mf_normalize(c->wi);
     if (!(wi.z > MF_R(0.0)) || (c->facet != MF_FACET_MIRROR && c->facet != MF_FACET_LAMBERT) ||
-        !(c->albedo >= MF_R(0.0) && c->albedo <= MF_R(1.0)) || c->rays < 1 || c->max_bounces < 1)
+        !(c->absorption >= MF_R(0.0) && c->absorption <= MF_R(1.0)) || c->rays < 1 || c->max_bounces < 1)
         return MF_ERROR_INVALID_ARGUMENT;
     n2 = (size_t)n * (size_t)n;
     for (i = 0; i < n2; ++i)
@@ -1170,13 +1148,13 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
                 o[1] = mf__wrap(o[1] + t * d[1], n);
                 o[2] = o[2] + t * d[2];
                 skip = facet;
-                w *= (double)c->albedo;
+                w *= 1.0 - (double)c->absorption;
                 if (c->facet == MF_FACET_MIRROR) dir = mf_normalize(mf_reflect(mf_scale(dir, MF_R(-1.0)), m));
                 else {   /* cosine-distributed about the facet normal */
                     mf_vec3 tt, bb, l;
                     mf_real u1 = mf__u01_real(mf__pcg_u01(&rng)), u2 = mf__u01_real(mf__pcg_u01(&rng));
                     l = mf__sample_cosine(u1, u2);
-                    mf_frame(m, &tt, &bb);
+                    { mf_basis fr_ = mf_basis_from_normal(m); tt = fr_.t; bb = fr_.b; }
                     dir = mf_normalize(mf_add(mf_add(mf_scale(tt, l.x), mf_scale(bb, l.y)), mf_scale(m, l.z)));
                 }
                 if (!(w > 0.0)) { bounces += (double)hits; done = 1; }   /* absorbed */

@@ -48,20 +48,21 @@ MF_INLINE mf_real mf_ms_fresnel(mf_real f_avg, mf_real e_avg)
 }
 
 /* The compensation lobe is sampled with the cosine distribution (its shape
- * in wi is (1 - E(wi)) wi.z, close to cosine): pdf = wi.z / pi. The weight
- * f_ms wi.z / pdf = pi f_ms. d and wo are unused (kept for symmetry with
- * mf_brdf_sample). The zero vector when wo.z <= 0. */
-MF_INLINE mf_vec3 mf_brdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+ * in wi is (1 - E(wi)) wi.z, close to cosine): pdf = wi.z / pi, weight
+ * f_ms wi.z / pdf = pi f_ms (mf_brdf_ms: table lookups or integration for
+ * the kinds without a table). No sample when wo.z <= 0. */
+MF_INLINE mf_sample mf_brdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
-    mf_real r, phi, z;
-    (void)d;
-    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    u1 = mf__u01(u1); u2 = mf__u01(u2);
-    r = MF_SQRT(u1);
-    phi = MF_R(2.0) * MF_PI * u2;
-    z = MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0)));
-    if (!(z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), z);
+    mf_sample s = mf__no_sample();
+    mf_vec3 wi;
+    if (!(wo.z > MF_R(0.0))) return s;
+    wi = mf__sample_cosine(u1, u2);
+    if (!(wi.z > MF_R(0.0))) return s;
+    s.wi = wi;
+    s.pdf = wi.z * MF_INV_PI;
+    s.weight = MF_PI * mf_brdf_ms(d, wo, wi);
+    s.lobe = MF_LOBE_REFLECTION;
+    return s;
 }
 MF_INLINE mf_real mf_brdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
@@ -89,7 +90,7 @@ MFDEF mf_result mf_albedo_table_build(mf_albedo_table *t, const mf_ndf *d, int n
 MFDEF void mf_albedo_table_release(mf_albedo_table *t);
 MFDEF mf_real mf_albedo_table_eval(const mf_albedo_table *t, mf_vec3 wo);
 MFDEF mf_real mf_albedo_table_average(const mf_albedo_table *t);
-MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi);
+MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi);
 
 /* Rough dielectrics (Kulla & Conty 2017, section 2.2), for one mf_ndf and
  * one eta (index below over index above, as mf_dielectric_bsdf). E1(mu) and
@@ -121,17 +122,18 @@ typedef struct mf_dielectric_ms_table {
     mf_real E1_avg, E2_avg;  /* hemispherical averages of the interpolants */
     mf_real x, y;            /* shares transmitted from above and from below */
 } mf_dielectric_ms_table;
-MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels);
-MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t);
+MFDEF mf_result mf_dielectric_ms_table_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels);
+MFDEF void mf_dielectric_ms_table_release(mf_dielectric_ms_table *t);
 /* E(wo) of the side of wo (importance transport, reflection + transmission) */
-MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo);
+MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo);
 /* the same by quadrature, for any mf_ndf (0 on bad input) */
 MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels);
 /* the compensation lobe (radiance form), its sampling (u3 picks the side:
  * transmission with the share of wo's side; cosine on that side) and pdf */
-MFDEF mf_real mf_dielectric_bsdf_ms(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
-MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3);
-MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
+MFDEF mf_real mf_dielectric_ms_table_bsdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi, mf_transport mode);
+MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_transport mode,
+                                              mf_real u1, mf_real u2, mf_real u3);
+MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
 
 /* @impl */
 /* The albedo integrands at (u1, u2) of the unit square: eta = 0, f cos / pdf
@@ -374,7 +376,7 @@ MFDEF mf_real mf_albedo_table_average(const mf_albedo_table *t)
     return (t && t->E) ? t->E_avg : MF_R(0.0);
 }
 
-MFDEF mf_real mf_brdf_ms_table(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
+MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     if (!t || !t->E || !(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     return mf__ms_lobe(mf_albedo_table_eval(t, wo), mf_albedo_table_eval(t, wi), t->E_avg);
@@ -390,7 +392,7 @@ MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_rea
     return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels);
 }
 
-MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
+MFDEF void mf_dielectric_ms_table_release(mf_dielectric_ms_table *t)
 {
     if (!t) return;
     if (t->E) MF_FREE(t->E);
@@ -399,7 +401,7 @@ MFDEF void mf_dielectric_ms_release(mf_dielectric_ms_table *t)
     t->E1_avg = t->E2_avg = t->x = t->y = t->eta = MF_R(0.0);
 }
 
-MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels)
+MFDEF mf_result mf_dielectric_ms_table_build(mf_dielectric_ms_table *t, const mf_ndf *d, mf_real eta, int n_mu, int panels)
 {
     int i, s;
     double *row, avg[2], x, y;
@@ -417,7 +419,7 @@ MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *
             mf_real e;
             if (s) w.z = -w.z;
             e = mf_dielectric_albedo_integrate(d, w, eta, panels);
-            if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_dielectric_ms_release(t); return MF_ERROR_INVALID_DATA; }
+            if (!(e >= MF_R(0.0)) || !(e <= MF_R(1.0))) { MF_FREE(row); mf_dielectric_ms_table_release(t); return MF_ERROR_INVALID_DATA; }
             t->E[(size_t)s * (size_t)n_mu + (size_t)i] = e;
             row[i] = (double)e;
         }
@@ -440,7 +442,7 @@ MFDEF mf_result mf_dielectric_ms_build(mf_dielectric_ms_table *t, const mf_ndf *
     return MF_SUCCESS;
 }
 
-MFDEF mf_real mf_dielectric_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
+MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_vec3 wo)
 {
     mf_real mu, fx;
     const mf_real *E;
@@ -460,33 +462,42 @@ static inline mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_
     mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);
     mf_real ea = below_i ? t->E2_avg : t->E1_avg, den = MF_PI * (MF_R(1.0) - ea);
     if (!(den > MF_R(1e-6))) return MF_R(0.0);
-    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_albedo(t, wi)) / den,
+    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wi)) / den,
                     MF_R(0.0), MF_BIG);
 }
 
-MFDEF mf_real mf_dielectric_bsdf_ms(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+MFDEF mf_real mf_dielectric_ms_table_bsdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi, mf_transport mode)
 {
     mf_real f, e;
     if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
     f = mf__dielectric_ms_imp(t, wo, wi);
-    if (wo.z * wi.z > MF_R(0.0)) return f;
+    if (wo.z * wi.z > MF_R(0.0) || mode == MF_IMPORTANCE) return f;
     e = wo.z > MF_R(0.0) ? t->eta : MF_R(1.0) / t->eta;   /* eta_i / eta_o */
     return f / (e * e);
 }
 
-MFDEF mf_vec3 mf_dielectric_ms_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3)
+MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_transport mode,
+                                              mf_real u1, mf_real u2, mf_real u3)
 {
+    mf_sample s = mf__no_sample();
     mf_vec3 w;
-    mf_real share;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    w = mf_brdf_ms_sample(0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), u1, u2);
+    mf_real share, p;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return s;
+    w = mf__sample_cosine(u1, u2);
+    if (!(w.z > MF_R(0.0))) return s;
     share = wo.z < MF_R(0.0) ? t->y : t->x;   /* transmitted share */
     if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
     if (wo.z < MF_R(0.0)) w.z = -w.z;
-    return w;
+    p = mf_dielectric_ms_table_pdf(t, wo, w);
+    if (!(p > MF_R(0.0))) return s;
+    s.wi = w;
+    s.pdf = p;
+    s.weight = mf_min(mf_dielectric_ms_table_bsdf(t, wo, w, mode) * MF_FABS(w.z) / p, MF_BIG);
+    s.lobe = wo.z * w.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
 }
 
-MFDEF mf_real mf_dielectric_ms_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
 {
     mf_real share;
     if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
