@@ -363,7 +363,7 @@ static void bench_ibm(void)
                 t1 = now_ns(); if ((t1 - t0) / nq < tib) tib = (t1 - t0) / nq;
                 for (q = 0; q < nq; ++q) s += (double)mf_ibm_pdf(&ibm, &fq[q], wo[q], wi[q]);
                 t0 = now_ns(); if ((t0 - t1) / nq < tpdf) tpdf = (t0 - t1) / nq;
-                for (q = 0; q < nq; ++q) s += (double)mf_ibm_sample(&ibm, &fq[q], wo[q], rnd(), rnd(), rnd(), rnd()).z;
+                for (q = 0; q < nq; ++q) s += (double)mf_ibm_sample(&ibm, &fq[q], wo[q], rnd(), rnd(), rnd(), rnd()).wi.z;
                 t1 = now_ns(); if ((t1 - t0) / nq < tsam) tsam = (t1 - t0) / nq;
             }
             t0 = now_ns();
@@ -530,7 +530,7 @@ static double b_brdf_sample(const mf_ndf *d)
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_brdf_sample(d, g_wo[i], g_u1[i], g_u2[i]);
+        mf_vec3 wi = mf_brdf_sample(d, g_wo[i], g_u1[i], g_u2[i]).wi;
         s += (double)wi.z + (double)mf_brdf_sample_weight(d, g_wo[i], wi);
     }
     return s;
@@ -557,7 +557,7 @@ static double b_ms_sample(const mf_ndf *d)
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_brdf_ms_sample(d, g_wo[i], g_u1[i], g_u2[i]);
+        mf_vec3 wi = mf_brdf_ms_sample(d, g_wo[i], g_u1[i], g_u2[i]).wi;
         mf_real p = mf_brdf_ms_pdf(d, g_wo[i], wi);
         s += (double)wi.z + (p > MF_R(0.0) ? (double)(mf_brdf_ms(d, g_wo[i], wi) * wi.z / p) : 0.0);
     }
@@ -569,7 +569,7 @@ static double b_plain_lookup(const mf_ndf *d) { LOOP(plain_bilinear(d->ax, g_wo[
 /* rough dielectric compensation lobe (eta 1.5, GGX of the bench), over the
  * same pairs as mf_dielectric_bsdf (half of them transmitted) */
 static mf_dielectric_ms_table g_dms;
-static double b_dielectric_ms(const mf_ndf *d) { (void)d; LOOP(mf_dielectric_bsdf_ms(&g_dms, g_wo[i], g_wt[i])); }
+static double b_dielectric_ms(const mf_ndf *d) { (void)d; LOOP(mf_dielectric_ms_table_bsdf(&g_dms, g_wo[i], g_wt[i], MF_RADIANCE)); }
 
 /* Rough dielectric, GGX only, written plainly from Walter et al. 2007 (wo
  * above, eta 1.5): the baseline of mf_dielectric_bsdf */
@@ -590,14 +590,14 @@ static mf_real plain_walter_ggx(mf_real ax, mf_real ay, mf_vec3 wo, mf_vec3 wi, 
     return (1 - F) * D * G * MF_FABS(ih) * oh / (den * den * wo.z * -wi.z) / (eta * eta);
 }
 static double b_walter_plain(const mf_ndf *d) { LOOP(plain_walter_ggx(d->ax, d->ay, g_wo[i], g_wt[i], MF_R(1.5))); }
-static double b_dielectric(const mf_ndf *d) { LOOP(mf_dielectric_bsdf(d, g_wo[i], g_wt[i], MF_R(1.5))); }
+static double b_dielectric(const mf_ndf *d) { LOOP(mf_dielectric_bsdf(d, g_wo[i], g_wt[i], MF_R(1.5), MF_RADIANCE)); }
 static double b_dielectric_pdf(const mf_ndf *d) { LOOP(mf_dielectric_pdf(d, g_wo[i], g_wt[i], MF_R(1.5))); }
 static double b_dielectric_sample(const mf_ndf *d)
 {
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_dielectric_sample(d, g_wo[i], MF_R(1.5), g_u1[i], g_u2[i], g_u1[(i + 7) % N]);
+        mf_vec3 wi = mf_dielectric_sample(d, g_wo[i], MF_R(1.5), MF_RADIANCE, g_u1[i], g_u2[i], g_u1[(i + 7) % N]).wi;
         s += (double)wi.z + (double)mf_dielectric_sample_weight(d, g_wo[i], wi, MF_R(1.5));
     }
     return s;
@@ -620,7 +620,7 @@ static double b_bounded_pdf(const mf_ndf *d)
     int i;
     for (i = 0; i < N; ++i) {
         mf_vec3 wi = mf_reflect(g_wo[i], mf_ggx_sample_visible_bounded(d, g_wo[i], g_u1[i], g_u2[i]));
-        s += (double)mf_ggx_brdf_pdf_bounded(d, g_wo[i], wi);
+        s += (double)mf_brdf_pdf_bounded(d, g_wo[i], wi);
     }
     return s;
 }
@@ -816,7 +816,7 @@ static void bench_ltc(void)
         g_sink += s;
         t0 = now_ns();
         fr.params[0] = fr.params[1] = MF_R(0.3); fr.params[2] = MF_R(0.0);
-        for (it = 0; it < 16; ++it) mf_ltc_fit(&g, NULL, NULL, MF_R(1.0) - MF_R(0.06) * (mf_real)it, fr.params, &fr);
+        for (it = 0; it < 16; ++it) mf_ltc_fit(&fr, &g, NULL, NULL, MF_R(1.0) - MF_R(0.06) * (mf_real)it, fr.params);
         t1 = now_ns();
         printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
         g_sink += s + (double)fr.albedo;
@@ -847,7 +847,7 @@ static void bench_ltc_shapes(void)
         for (i = 0; i < reps; ++i) {   /* plain: the disk's frame, 32 vertices, the polygon integral */
             mf_vec3 tt, bb, nn = mf_normalize(n), q[32];
             c.x = (mf_real)(0.2 + 1e-7 * (i & 7));
-            mf_frame(nn, &tt, &bb);
+            { mf_basis fr_ = mf_basis_from_normal(nn); tt = fr_.t; bb = fr_.b; }
             for (k = 0; k < 32; ++k) q[k] = mf_add(c, mf_add(mf_scale(tt, rad * cs[k]), mf_scale(bb, rad * sn[k])));
             s += (double)mf_ltc_integrate(&l, q, 32, 0);
         }
@@ -999,11 +999,11 @@ static void bench_core(const struct bench_kind *ks, int sections)
         run_pair(b_plain_lookup, b_albedo, g, &base, &ours);
         printf("bench plain_bilinear_lookup_baseline %.2f\n", base);
         printf("bench ggx_albedo_lookup %.2f ratio=%.3f\n", ours, ours / base);
-        if (mf_dielectric_ms_build(&g_dms, g, MF_R(1.5), 32, 2) == MF_SUCCESS) {
+        if (mf_dielectric_ms_table_build(&g_dms, g, MF_R(1.5), 32, 2) == MF_SUCCESS) {
             run_pair(b_dielectric, b_dielectric_ms, g, &base, &ours);
             printf("bench ggx_dielectric_bsdf_single_baseline %.2f\n", base);
             printf("bench ggx_dielectric_bsdf_ms %.2f ratio=%.3f\n", ours, ours / base);
-            mf_dielectric_ms_release(&g_dms);
+            mf_dielectric_ms_table_release(&g_dms);
         }
     }
     for (k = 0; k < 5 && (sections & 2); ++k) {   /* kinds */

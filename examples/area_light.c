@@ -279,7 +279,7 @@ static void shade(int row, mf_real alpha, mf_vec3 p, mf_vec3 n, mf_vec3 v, rng *
     /* local frame: x axis in the plane of n and v, so wo = (sin, 0, cos) */
     t = sub(v, mf_scale(n, mf_dot(v, n)));
     if (mf_dot(t, t) > MF_R(1e-12)) { t = mf_normalize(t); b = mf_cross(n, t); }
-    else mf_frame(n, &t, &b);
+    else { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
     wo = mf_vec3_make(mf_dot(v, t), MF_R(0.0), mf_dot(v, n));
     if (!(wo.z > MF_R(0.0))) return;
     /* LTC: the light relative to p, in the local frame */
@@ -328,7 +328,7 @@ static void shade(int row, mf_real alpha, mf_vec3 p, mf_vec3 n, mf_vec3 v, rng *
     /* MC, BRDF sampling through the visible normals; a sample counts if it hits the light */
     for (i = 0; i < NB; ++i) {
         mf_real u1 = ((mf_real)(i % NBX) + rng_u(r)) / (mf_real)NBX, su, sv, cl, tl, pl, pb, wgt;
-        mf_vec3 wi = mf_brdf_sample(&d, wo, u1, ((mf_real)(i / NBX) + rng_u(r)) / (mf_real)NBX), w;
+        mf_vec3 wi = mf_brdf_sample(&d, wo, u1, ((mf_real)(i / NBX) + rng_u(r)) / (mf_real)NBX).wi, w;
         if (!(wi.z > MF_R(0.0))) continue;
         w = mf_add(mf_add(mf_scale(t, wi.x), mf_scale(b, wi.y)), mf_scale(n, wi.z));
         tl = hit_light(p, w, &cl, &su, &sv);

@@ -78,7 +78,7 @@ static void conductor(const mf_ndf *d, int furnace, int comp, mf_vec3 n, mf_real
     mf_real L[3], w;
     int c;
     out[0] = out[1] = out[2] = MF_R(0.0);
-    wi = mf_brdf_sample(d, wo, u1, u2);
+    wi = mf_brdf_sample(d, wo, u1, u2).wi;
     if (wi.z > MF_R(0.0)) {
         w = mf_brdf_sample_weight(d, wo, wi);
         wh = mf_normalize(mf_add(wo, wi));
@@ -87,7 +87,7 @@ static void conductor(const mf_ndf *d, int furnace, int comp, mf_vec3 n, mf_real
             out[c] += w * L[c] * (furnace ? MF_R(1.0) : mf_fresnel_conductor(mf_dot(wi, wh), eta_au[c], kap_au[c]));
     }
     if (!comp) return;
-    wi = mf_brdf_ms_sample(d, wo, u3, u4);
+    wi = mf_brdf_ms_sample(d, wo, u3, u4).wi;
     if (wi.z > MF_R(0.0)) {
         mf_real p = mf_brdf_ms_pdf(d, wo, wi);
         w = p > MF_R(0.0) ? mf_brdf_ms(d, wo, wi) * wi.z / p : MF_R(0.0);
@@ -110,17 +110,17 @@ static void glass(const mf_ndf *d, const mf_dielectric_ms_table *t, int furnace,
         wo = mf_to_local(&f, mf_scale(dir, MF_R(-1.0)));   /* outward normal: air above, glass below */
         /* compensated: the single-scattering lobe with probability E(wo),
          * the compensation lobe otherwise */
-        e = t ? mf_dielectric_albedo(t, wo) : MF_R(1.0);
+        e = t ? mf_dielectric_ms_table_albedo(t, wo) : MF_R(1.0);
         if (!t || rng_u(r) < e) {
-            wl = mf_dielectric_sample(d, wo, GLASS, rng_u(r), rng_u(r), rng_u(r));
+            wl = mf_dielectric_sample(d, wo, GLASS, MF_RADIANCE, rng_u(r), rng_u(r), rng_u(r)).wi;
             if (wl.x == MF_R(0.0) && wl.y == MF_R(0.0) && wl.z == MF_R(0.0)) return;
             thr *= mf_dielectric_sample_weight(d, wo, wl, GLASS) / e;
         } else {
             mf_real pd;
-            wl = mf_dielectric_ms_sample(t, wo, rng_u(r), rng_u(r), rng_u(r));
-            pd = mf_dielectric_ms_pdf(t, wo, wl);
+            wl = mf_dielectric_ms_table_sample(t, wo, MF_RADIANCE, rng_u(r), rng_u(r), rng_u(r)).wi;
+            pd = mf_dielectric_ms_table_pdf(t, wo, wl);
             if (!(pd > MF_R(0.0))) return;
-            thr *= mf_dielectric_bsdf_ms(t, wo, wl) * MF_FABS(wl.z) / pd / (MF_R(1.0) - e);
+            thr *= mf_dielectric_ms_table_bsdf(t, wo, wl, MF_RADIANCE) * MF_FABS(wl.z) / pd / (MF_R(1.0) - e);
         }
         wi = mf_to_world(&f, wl);
         dir = wi;
@@ -154,7 +154,7 @@ int main(int argc, char **argv)
     }
     for (col = 0; col < 2; ++col) {
         mf_ndf d = mf_ggx(alphas[6 + col], alphas[6 + col]);
-        if (mf_dielectric_ms_build(&gt[col], &d, GLASS, 32, 4) != MF_SUCCESS) { fprintf(stderr, "table build failed\n"); return 1; }
+        if (mf_dielectric_ms_table_build(&gt[col], &d, GLASS, 32, 4) != MF_SUCCESS) { fprintf(stderr, "table build failed\n"); return 1; }
     }
     memset(mean, 0, sizeof mean);
     memset(cnt, 0, sizeof cnt);
@@ -203,8 +203,8 @@ int main(int argc, char **argv)
             ex_text(&im, col * CELL + 3, row * CELL + 3, 1, rn[row]);
             ex_label(&im, col * CELL + 3, row * CELL + CELL - 10, 1, col < 6 ? "ggx %g" : "glass %g", (double)alphas[col]);
         }
-    mf_dielectric_ms_release(&gt[0]);
-    mf_dielectric_ms_release(&gt[1]);
+    mf_dielectric_ms_table_release(&gt[0]);
+    mf_dielectric_ms_table_release(&gt[1]);
     err = ex_write(&im, base);
     ex_image_free(&im);
     printf("furnace (radiance 1), mean over each sphere: columns GGX alpha 0.05 0.2 0.4 0.6 0.8 1, glass 0.001, glass 0.3\n");

@@ -75,7 +75,7 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
     mf_vec3 t, b, wo, wi, wh, lw;
     mf_real f, sk[3];
     int c;
-    mf_frame(n, &t, &b);
+    { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
     /* world -> local: components along (t, b, n); the viewer is at +z */
     wo = mf_vec3_make(t.z, b.z, n.z);
     out[0] = out[1] = out[2] = MF_R(0.0);
@@ -89,7 +89,7 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
     }
     /* sky, one importance sample through the visible normals of wo */
     if (sky_w <= MF_R(0.0)) return;
-    wi = mf_brdf_sample(d, wo, u1, u2);
+    wi = mf_brdf_sample(d, wo, u1, u2).wi;
     if (wi.z <= MF_R(0.0)) return;
     f = sky_w * mf_brdf_sample_weight(d, wo, wi);
     wh = mf_normalize(mf_add(wo, wi));

@@ -14,12 +14,12 @@ __global__ void mf_kernel(const float *u, float *out, int n)
     k[i & 3] = (i & 4) ? mf_transformed(k[i & 3], mf_mat2_make(MF_R(1.0), MF_R(2.0), MF_R(0.0), MF_R(1.0))) : k[i & 3];
     const mf_ndf *d = &k[i & 3];
     mf_vec3 wo = mf_normalize(mf_vec3_make((mf_real)u[i], MF_R(0.2), MF_R(0.8)));
-    mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);
+    mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]).wi;
     mf_vec3 wm = mf_sample_D(d, (mf_real)u[i], MF_R(0.5));
     mf_real r = mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi) + mf_brdf_sample_weight(d, wo, wi);
     r += mf_D(d, wm) + mf_G1(d, wo, wm) + mf_G2_separable(d, wo, wi, wm) + mf_D_visible(d, wo, wm);
     r += mf_fresnel_conductor(wo.z, MF_R(0.2), MF_R(3.9)) + mf_fresnel_dielectric(wo.z, MF_R(1.5));
-    r += mf_fresnel_schlick(MF_R(0.04), wo.z) + mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo);
+    r += mf_fresnel_schlick(wo.z, MF_R(0.04)) + mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo);
     {
         mf_ltc l = mf_ltc_from_inverse(MF_R(2.0), MF_R(0.3), MF_R(2.5), MF_R(-0.2), MF_R(1.0));
         mf_vec3 q[4];
@@ -44,8 +44,8 @@ __global__ void mf_kernel(const float *u, float *out, int n)
         mf_real w[MF_IBM_MAX_WINDOW];
         ibm = *ibm_dev;
         f.u = (mf_real)u[i]; f.v = MF_R(0.5); f.ax = MF_R(0.01); f.ay = MF_R(0.0); f.bx = MF_R(0.0); f.by = MF_R(0.01);
-        r += mf_ibm_brdf(&ibm, &f, wo, wi) + mf_ibm_pdf(&ibm, &f, wo, wi) + mf_ibm_brdf_pdf(&ibm, &f, wo, wi, &pdf);
-        r += mf_ibm_sample(&ibm, &f, wo, (mf_real)u[i], MF_R(0.2), MF_R(0.3), MF_R(0.4)).z + pdf;
+        r += mf_ibm_brdf(&ibm, &f, wo, wi) + mf_ibm_pdf(&ibm, &f, wo, wi) + mf_ibm_brdf_and_pdf(&ibm, &f, wo, wi, &pdf);
+        r += mf_ibm_sample(&ibm, &f, wo, (mf_real)u[i], MF_R(0.2), MF_R(0.3), MF_R(0.4)).wi.z + pdf;
         r += mf_ibm_bin_weight(&ibm, mf_ibm_bin_of(&ibm, wo), &f) + (mf_real)mf_ibm_bin_count(&ibm);
         r += (mf_real)mf_ibm_neighbourhood_weights(&ibm, &f, mf_ibm_texel_bin(&ibm, 1, 2), bins, w);
         r += mf_ibm_bin_normal(&ibm, 0).z + (mf_real)mf_ibm_bin_texels(&ibm, 0);
@@ -62,7 +62,7 @@ __global__ void mf_kernel_tabulated(mf_tabulated t, const float *u, float *out, 
     mf_ndf d = mf_tabulated_ndf(&t);
     mf_ndf dt = mf_transformed(d, mf_mat2_make(MF_R(1.2), MF_R(0.1), MF_R(0.0), MF_R(0.9)));
     mf_vec3 wo = mf_normalize(mf_vec3_make((mf_real)u[i], MF_R(0.2), MF_R(0.8)));
-    mf_vec3 wi = mf_brdf_sample(&dt, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);
+    mf_vec3 wi = mf_brdf_sample(&dt, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]).wi;
     mf_vec3 wm = mf_sample_D(&d, (mf_real)u[i], MF_R(0.5));
     out[i] = (float)(mf_brdf(&dt, wo, wi) + mf_brdf_pdf(&dt, wo, wi) + mf_D(&d, wm) + mf_lambda(&d, wo));
 }

@@ -89,7 +89,7 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
     o[2] = mf_G2(&d, wo, wi, wm);
     o[3] = mf_brdf(&d, wo, wi);
     o[4] = mf_brdf_pdf(&d, wo, wi);
-    mf_vec3 s = mf_brdf_sample(&d, wo, u1, u2);
+    mf_vec3 s = mf_brdf_sample(&d, wo, u1, u2).wi;
     o[5] = s.x; o[6] = s.z;
     o[7] = mf_brdf_sample_weight(&d, wo, wi);   // at a given direction: near the horizon the
                                                 // weight amplifies the sample's rounding
@@ -98,9 +98,9 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
     }
     mf_vec3 wt = mf_vec3_make(-wi.x, -wi.y, -wi.z);
     if (!(w->skip & 2)) {
-    o[10] = mf_dielectric_bsdf(&d, wo, wt, eta);
+    o[10] = mf_dielectric_bsdf(&d, wo, wt, eta, MF_RADIANCE);
     o[11] = mf_dielectric_pdf(&d, wo, wt, eta);
-    o[12] = mf_dielectric_sample(&d, wo, eta, u1, u2, u3).z;
+    o[12] = mf_dielectric_sample(&d, wo, eta, MF_RADIANCE, u1, u2, u3).wi.z;
     }
     if (!(w->skip & 4)) {   // a quad light over the shading point, through a GGX LTC
         mf_ltc l = mf_ltc_from_inverse(MF_R(1.0) + rnd(i, 13), MF_R(0.3), MF_R(1.5), MF_R(-0.2), MF_R(1.0));
@@ -113,7 +113,7 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
     if (!(w->skip & 8)) {
         mf_ndf t = mf_tabulated_ndf(&w->tab);
         o[14] = mf_brdf(&t, wo, wi);
-        o[15] = mf_brdf_sample(&t, wo, u1, u2).z;
+        o[15] = mf_brdf_sample(&t, wo, u1, u2).wi.z;
     }
     if (!(w->skip & 16)) {   // footprints of 0.1 to 1e5 texels, sheared, anywhere on the map
         mf_real side = MF_EXP(MF_R(-1.15) + MF_R(6.9) * rnd(i, 16)) / (mf_real)w->ibm.width;
@@ -131,7 +131,7 @@ MF_HD static void run_case(const world *w, unsigned i, mf_real *o)
         if (wg.z <= MF_R(0.0)) wg = wi;
         if (!(w->skip & 64)) o[17] = mf_ibm_brdf(&w->ibm, &f, wo, wg);
         if (!(w->skip & 128)) o[18] = mf_ibm_pdf(&w->ibm, &f, wo, wg);
-        if (!(w->skip & 256)) o[19] = mf_ibm_sample(&w->ibm, &f, wo, u1, u2, u3, rnd(i, 22)).z;
+        if (!(w->skip & 256)) o[19] = mf_ibm_sample(&w->ibm, &f, wo, u1, u2, u3, rnd(i, 22)).wi.z;
     }
 }
 
@@ -162,7 +162,7 @@ template <int op> __global__ void k_rate(int per, mf_real *sink)
         case R_INPUTS: acc += wo.x + wi.y; break;
         case R_GGX_BRDF: acc += mf_brdf(&g, wo, wi); break;
         case R_GGX_BRDF_PDF: acc += mf_brdf(&g, wo, wi) + mf_brdf_pdf(&g, wo, wi); break;
-        case R_GGX_SAMPLE: { mf_vec3 s = mf_brdf_sample(&g, wo, u2, u1); acc += s.z > 0 ? mf_brdf_sample_weight(&g, wo, s) : 0; } break;
+        case R_GGX_SAMPLE: { mf_vec3 s = mf_brdf_sample(&g, wo, u2, u1).wi; acc += s.z > 0 ? mf_brdf_sample_weight(&g, wo, s) : 0; } break;
         case R_GGX_VNDF: acc += mf_sample_visible(&g, wo, u2, u1).z; break;
         default: acc += mf_sample_visible(&b, wo, u2, u1).z; break;
         }

@@ -37,11 +37,11 @@ int main(void)
                 mf_real u1 = ((mf_real)i + MF_R(0.37)) / MF_R(24.0), u2 = ((mf_real)j + MF_R(0.61)) / MF_R(24.0);
                 mf_real t = MF_R(1.55) * (mf_real)((i * 7 + j) % 24) / MF_R(23.0), p = MF_R(0.7) * (mf_real)j;
                 mf_vec3 wo = mf_vec3_make(MF_SIN(t) * MF_COS(p), MF_SIN(t) * MF_SIN(p), MF_COS(t));
-                mf_vec3 wi = mf_brdf_sample(&d[k], wo, u2, u1);
+                mf_vec3 wi = mf_brdf_sample(&d[k], wo, u2, u1).wi;
                 eat3(mf_sample_visible(&d[k], wo, u1, u2));
                 eat3(mf_sample_D(&d[k], u1, u2));
                 eat3(wi);
-                eat3(mf_dielectric_sample(&d[k], wo, MF_R(1.5), u1, u2, MF_R(0.5) * (u1 + u2)));
+                eat3(mf_dielectric_sample(&d[k], wo, MF_R(1.5), MF_RADIANCE, u1, u2, MF_R(0.5) * (u1 + u2)).wi);
                 eat(mf_brdf_pdf(&d[k], wo, wi));
                 n += 4;
             }

@@ -50,7 +50,7 @@ int main(void)
             w = mf_ibm_bin_weight(&ibm, j, &f);
             ok = ok && w >= MF_R(0.0) && w <= MF_R(1.0);
             (void)mf_ibm_brdf(&ibm, &f, mf_vec3_make(0, 0, 1), mf_vec3_make(0, 0, 1));
-            (void)mf_ibm_sample(&ibm, &f, mf_vec3_make(0, 0, 1), MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5));
+            (void)mf_ibm_sample(&ibm, &f, mf_vec3_make(0, 0, 1), MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).wi;
         }
         check(ok, "ibm_bin_weight, brdf, sample with NaN / Inf footprints");
         check(mf_ibm_bin_of(&ibm, mf_vec3_make(nan, 0, 1)) < mf_ibm_bin_count(&ibm), "ibm_bin_of(NaN) in range");

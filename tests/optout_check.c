@@ -19,7 +19,7 @@ int main(void)
 {
     mf_ndf d = mf_ggx(MF_R(0.3), MF_R(0.2));
     mf_vec3 wo = mf_vec3_make(MF_R(0.3), MF_R(0.2), MF_R(0.93));
-    mf_vec3 wi = mf_brdf_sample(&d, wo, MF_R(0.4), MF_R(0.7));
+    mf_vec3 wi = mf_brdf_sample(&d, wo, MF_R(0.4), MF_R(0.7)).wi;
     mf_real f = mf_brdf(&d, wo, wi) + mf_brdf_pdf(&d, wo, wi);
 #ifndef MF_NO_LTC_TABLE
     mf_ltc l = mf_ltc_ggx(MF_R(0.5), MF_R(0.3));

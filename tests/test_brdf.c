@@ -54,7 +54,7 @@ void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long
     /* cell scale from pilot samples */
     mft_seed(&r, seed + 77);
     for (i = 0; i < 2001; ++i) {
-        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
         mf_vec3 h = mf_normalize(mf_add(wo, wi));
         rr[i] = wi.z > 0 ? mft_norm_radius(&d, h) : 1e30;
     }
@@ -63,7 +63,7 @@ void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long
     memset(obs, 0, sizeof obs);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
-        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
         double w;
         if (!(wi.z > 0)) { obs[NA * NP] += 1; continue; }
         /* weight identity and reciprocity on the sampled pair */
@@ -136,7 +136,7 @@ void test_brdf(void)
         mf_vec3 up = mft_dir(0.5, 0.0), down = mft_dir(2.0, 0.0);
         MFT_CHECK(mf_brdf(&d, down, up) == 0 && mf_brdf(&d, up, down) == 0, "brdf 0 below the horizon");
         MFT_CHECK(mf_brdf_pdf(&d, down, up) == 0 && mf_brdf_pdf(&d, up, down) == 0, "pdf 0 below the horizon");
-        MFT_CHECK(mf_brdf_sample(&d, down, MF_R(0.5), MF_R(0.5)).z == 0, "no sample for wo below the horizon");
+        MFT_CHECK(mf_brdf_sample(&d, down, MF_R(0.5), MF_R(0.5)).wi.z == 0, "no sample for wo below the horizon");
         MFT_CHECK(mf_brdf_sample_weight(&d, up, down) == 0, "weight 0 below the horizon");
     }
 }

@@ -35,7 +35,7 @@ void test_core(void)
                   : mf_normalize(mf_vec3_make((mf_real)(mft_u01(&r) - .5), (mf_real)(mft_u01(&r) - .5), (mf_real)(mft_u01(&r) - .5)));
         mf_vec3 t, b, c;
         double e;
-        mf_frame(n, &t, &b);
+        { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
         c = mf_cross(t, b);
         e = fabs(mf_dot(t, n)) + fabs(mf_dot(b, n)) + fabs(mf_dot(t, b)) + fabs(mf_dot(t, t) - 1) +
             fabs(mf_dot(b, b) - 1) + fabs(c.x - n.x) + fabs(c.y - n.y) + fabs(c.z - n.z);

@@ -30,7 +30,7 @@ static double ddens(mf_vec3 w, void *p)
     mf_vec3 wi = c->lower ? mf_vec3_make(w.x, w.y, -w.z) : w;
     if (c->what == 0) return (double)mf_dielectric_pdf(c->d, c->wo, wi, c->eta);
     {
-        double f = (double)mf_dielectric_bsdf(c->d, c->wo, wi, c->eta) * fabs((double)wi.z);
+        double f = (double)mf_dielectric_bsdf(c->d, c->wo, wi, c->eta, MF_RADIANCE) * fabs((double)wi.z);
         /* e = eta_i / eta_o across the interface */
         double e = c->wo.z > 0 ? (double)c->eta : 1.0 / (double)c->eta;
         return wi.z * c->wo.z < 0 ? f * e * e : f;
@@ -53,7 +53,7 @@ static void dielectric_case(const char *name, const mf_ndf *d, double theta, int
     /* cells per hemisphere scaled by pilot samples */
     mft_seed(&r, seed + 3);
     for (i = 0; i < 4000 && (nr[0] < 1001 || nr[1] < 1001); ++i) {
-        mf_vec3 wi = mf_dielectric_sample(d, wo, (mf_real)eta, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = mf_dielectric_sample(d, wo, (mf_real)eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
         int lo = wi.z < 0;
         if (wi.z == 0 || nr[lo] >= 1001) continue;
         rr[lo][nr[lo]++] = mft_norm_radius(&iso, mf_vec3_make(wi.x, wi.y, lo ? -wi.z : wi.z));
@@ -62,14 +62,14 @@ static void dielectric_case(const char *name, const mf_ndf *d, double theta, int
     memset(obs, 0, sizeof obs);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
-        mf_vec3 wi = mf_dielectric_sample(d, wo, (mf_real)eta, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = mf_dielectric_sample(d, wo, (mf_real)eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
         double pdf, f, w, ew;
         int lo;
         if (wi.z == 0) { obs[2 * NC] += 1.0; continue; }
         lo = wi.z < 0;
         obs[lo * NC + mft_cell_of(&cells[lo], mf_vec3_make(wi.x, wi.y, lo ? -wi.z : wi.z))] += 1.0;
         pdf = (double)mf_dielectric_pdf(d, wo, wi, (mf_real)eta);
-        f = (double)mf_dielectric_bsdf(d, wo, wi, (mf_real)eta);
+        f = (double)mf_dielectric_bsdf(d, wo, wi, (mf_real)eta, MF_RADIANCE);
         w = (double)mf_dielectric_sample_weight(d, wo, wi, (mf_real)eta);
         if (!(pdf > 0.0) || !(fabs(w - f * fabs((double)wi.z) / pdf) <= MFT_TOL(1e-6, 2e-3) * (w + 1e-3))) ++badw;
         ew = wi.z * wo.z < 0 ? w * (wo.z > 0 ? eta * eta : 1.0 / (eta * eta)) : w;   /* importance transport */
@@ -159,8 +159,8 @@ void test_dielectric(void)
             if (i % 3 == 0) a.z = -a.z;
             if (i % 5 < 2) b.z = -b.z;
             na = a.z > 0 ? 1.0 : eta; nb = b.z > 0 ? 1.0 : eta;
-            fa = (double)mf_dielectric_bsdf(&d, a, b, (mf_real)eta) / (na * na);
-            fb = (double)mf_dielectric_bsdf(&d, b, a, (mf_real)eta) / (nb * nb);
+            fa = (double)mf_dielectric_bsdf(&d, a, b, (mf_real)eta, MF_RADIANCE) / (na * na);
+            fb = (double)mf_dielectric_bsdf(&d, b, a, (mf_real)eta, MF_RADIANCE) / (nb * nb);
             if (fa < 1e-4 && fb < 1e-4) continue;
             e = fabs(fa - fb) / fmax(fa, fb);
             if (e > worst) worst = e;
@@ -177,7 +177,7 @@ void test_dielectric(void)
             int nrefl = 0, n = 20000, has_t = mf_refract(wo, mf_vec3_make(0, 0, 1), (mf_real)eta, &wt);
             mft_seed(&r, 40 + (unsigned long long)k);
             for (i = 0; i < n; ++i) {
-                mf_vec3 wi = mf_dielectric_sample(&d, wo, (mf_real)eta, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                mf_vec3 wi = mf_dielectric_sample(&d, wo, (mf_real)eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
                 if (wi.z > 0) ++nrefl;
                 else if (wi.z < 0 && has_t) { ++ntr; nnear += acos(fmin(1.0, (double)mf_dot(wi, wt))) < 0.01; }
             }
@@ -200,9 +200,9 @@ void test_dielectric(void)
         for (a = 0; a < 5; ++a)
             for (b = 0; b < 5; ++b)
                 for (c = 0; c < 5; ++c) {
-                    mf_real f = mf_dielectric_bsdf(&d, ws[a], ws[b], etas[c]), p = mf_dielectric_pdf(&d, ws[a], ws[b], etas[c]);
+                    mf_real f = mf_dielectric_bsdf(&d, ws[a], ws[b], etas[c], MF_RADIANCE), p = mf_dielectric_pdf(&d, ws[a], ws[b], etas[c]);
                     mf_real w = mf_dielectric_sample_weight(&d, ws[a], ws[b], etas[c]);
-                    mf_vec3 s = mf_dielectric_sample(&d, ws[a], etas[c], MF_R(0.5), nan, MF_R(0.5));
+                    mf_vec3 s = mf_dielectric_sample(&d, ws[a], etas[c], MF_RADIANCE, MF_R(0.5), nan, MF_R(0.5)).wi;
                     if (!mft_finite(f) || !mft_finite(p) || !mft_finite(w) || p < 0 || f < 0 || !mft_finite(s.x) || !mft_finite(s.z)) {
                         if (mft_verbose) printf("    degenerate %d %d %d: f %g p %g w %g s %g %g %g\n", a, b, c, (double)f, (double)p, (double)w, (double)s.x, (double)s.y, (double)s.z);
                         ok = 0;

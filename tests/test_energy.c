@@ -60,7 +60,7 @@ static double ref_ms(const mf_ndf *d, const mf_albedo_table *t, mf_vec3 wo)
             for (q = 0; q < 16; ++q) {
                 double ph = 2.0 * 3.14159265358979324 * (q + 0.5) / 16.0;
                 mf_vec3 wi = mf_vec3_make((mf_real)(s * cos(ph)), (mf_real)(s * sin(ph)), (mf_real)mu);
-                double f = t ? (double)mf_brdf_ms_table(t, wo, wi) : (double)mf_brdf_ms(d, wo, wi);
+                double f = t ? (double)mf_albedo_table_brdf_ms(t, wo, wi) : (double)mf_brdf_ms(d, wo, wi);
                 sum += gw[i] / 32.0 * 2.0 * x * (2.0 * 3.14159265358979324 / 16.0) * f * mu;
             }
         }
@@ -205,7 +205,7 @@ static void builder(void)
         ok &= mf_albedo_table_build(&t, &base, 8, 1, 0) == MF_ERROR_INVALID_ARGUMENT;
         ok &= mf_albedo_table_build(&t, &base, 1 << 20, 1, 1) == MF_ERROR_INVALID_ARGUMENT;
         ok &= mf_albedo_table_eval(&t, view(0.5, 0.0)) == 0 && mf_albedo_table_average(NULL) == 0;
-        ok &= mf_brdf_ms_table(NULL, view(0.5, 0.0), view(0.5, 0.0)) == 0;
+        ok &= mf_albedo_table_brdf_ms(NULL, view(0.5, 0.0), view(0.5, 0.0)) == 0;
         mf_albedo_table_release(NULL);
         mf_albedo_table_release(&t);
         CHECKV(ok, "mf_albedo_table_build: bad arguments are MF_ERROR_INVALID_ARGUMENT, nothing allocated");
@@ -238,7 +238,7 @@ static void fresnel_and_sampling(void)
         mft_seed(&r, 12);
         for (i = 0; i < 80; ++i) { obs[i] = 0; ex[i] = n / 80.0; }
         for (i = 0; i < n; ++i) {
-            mf_vec3 wi = mf_brdf_ms_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+            mf_vec3 wi = mf_brdf_ms_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
             double pdf = mf_brdf_ms_pdf(&d, wo, wi), ph;
             int b0, b1;
             if (!(wi.z > 0) || !(pdf > 0)) { ++lost; continue; }
@@ -299,7 +299,7 @@ static void robust(void)
                     if (!mft_finite(f) || f < 0 || !mft_finite(p) || p < 0) ++bad;
                 }
                 for (j = 0; j < 7; ++j) {
-                    mf_vec3 w = mf_brdf_ms_sample(&d, dirs[i], (mf_real)us[j], (mf_real)us[(j + 2) % 7]);
+                    mf_vec3 w = mf_brdf_ms_sample(&d, dirs[i], (mf_real)us[j], (mf_real)us[(j + 2) % 7]).wi;
                     double l = (double)w.x * w.x + (double)w.y * w.y + (double)w.z * w.z;
                     if (!mft_finite(l) || !(l == 0.0 || fabs(l - 1.0) < 1e-4)) ++bad;
                 }
@@ -340,7 +340,7 @@ static double ref_diel_ms(const mf_dielectric_ms_table *t, mf_vec3 wo)
                 for (q = 0; q < 16; ++q) {
                     double ph = 2.0 * 3.14159265358979324 * (q + 0.5) / 16.0, f, e;
                     mf_vec3 wi = mf_vec3_make((mf_real)(s * cos(ph)), (mf_real)(s * sin(ph)), (mf_real)(side ? -mu : mu));
-                    f = (double)mf_dielectric_bsdf_ms(t, wo, wi);
+                    f = (double)mf_dielectric_ms_table_bsdf(t, wo, wi, MF_RADIANCE);
                     if ((wo.z > 0) != (wi.z > 0)) { e = wo.z > 0 ? (double)t->eta : 1.0 / (double)t->eta; f *= e * e; }
                     sum += gw[i] / 32.0 * 2.0 * x * (2.0 * 3.14159265358979324 / 16.0) * f * mu;
                 }
@@ -366,7 +366,7 @@ static void dielectric(void)
             mf_ndf d = k ? mf_beckmann((mf_real)alphas[ia], (mf_real)alphas[ia]) : mf_ggx((mf_real)alphas[ia], (mf_real)alphas[ia]);
             mf_dielectric_ms_table t;
             mft_rng r;
-            if (mf_dielectric_ms_build(&t, &d, eta, 32, 8) != MF_SUCCESS) { CHECKV(0, "mf_dielectric_ms_build succeeds"); continue; }
+            if (mf_dielectric_ms_table_build(&t, &d, eta, 32, 8) != MF_SUCCESS) { CHECKV(0, "mf_dielectric_ms_build succeeds"); continue; }
             mft_seed(&r, 99 + ia);
             for (im = 0; im < 5; ++im)
                 for (side = 0; side < 2; ++side) {
@@ -374,7 +374,7 @@ static void dielectric(void)
                     double s1 = 0.0, s2 = 0.0, e, sig, tot;
                     if (side) wo.z = -wo.z;
                     for (i = 0; i < n; ++i) {
-                        mf_vec3 wi = mf_dielectric_sample(&d, wo, eta, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                        mf_vec3 wi = mf_dielectric_sample(&d, wo, eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
                         double w;
                         if (wi.x == 0 && wi.y == 0 && wi.z == 0) continue;
                         w = (double)mf_dielectric_sample_weight(&d, wo, wi, eta);
@@ -387,7 +387,7 @@ static void dielectric(void)
                     tot = e + ref_diel_ms(&t, wo);
                     if (fabs(tot - 1.0) - 4.0 * sig > worst_f) worst_f = fabs(tot - 1.0) - 4.0 * sig;
                     if (fabs(tot - 1.0) > raw_f) { raw_f = fabs(tot - 1.0); wa = alphas[ia]; wm = mus[im]; ws = side; }
-                    if (fabs(e - (double)mf_dielectric_albedo(&t, wo)) - 4.0 * sig > worst_e) worst_e = fabs(e - (double)mf_dielectric_albedo(&t, wo)) - 4.0 * sig;
+                    if (fabs(e - (double)mf_dielectric_ms_table_albedo(&t, wo)) - 4.0 * sig > worst_e) worst_e = fabs(e - (double)mf_dielectric_ms_table_albedo(&t, wo)) - 4.0 * sig;
                     if (1.0 - e > loss) { loss = 1.0 - e; la = alphas[ia]; lm = mus[im]; ls = side; }
                 }
             /* generalized reciprocity of the lobe: f(wo, wi) / eta_o^2 = f(wi, wo) / eta_i^2 */
@@ -396,11 +396,11 @@ static void dielectric(void)
                 double na = 1.0, nb = 1.0, f1, f2;
                 if (i & 1) { a.z = -a.z; na = 1.5; }
                 if (i & 2) { b.z = -b.z; nb = 1.5; }
-                f1 = (double)mf_dielectric_bsdf_ms(&t, a, b) / (na * na);
-                f2 = (double)mf_dielectric_bsdf_ms(&t, b, a) / (nb * nb);
+                f1 = (double)mf_dielectric_ms_table_bsdf(&t, a, b, MF_RADIANCE) / (na * na);
+                f2 = (double)mf_dielectric_ms_table_bsdf(&t, b, a, MF_RADIANCE) / (nb * nb);
                 if (fabs(f1 - f2) > MFT_TOL(1e-9, 1e-5) * (fabs(f1) + 1e-3)) ++bad_recip;
             }
-            mf_dielectric_ms_release(&t);
+            mf_dielectric_ms_table_release(&t);
         }
         snprintf(msg, sizeof msg, "%s dielectric eta 1.5 white furnace (importance transport), both sides: worst |1 - albedo| %.2e "
                  "(alpha %g, mu %g, %s; MC sigma <= %.1e, %d samples; %.1e beyond 4 sigma) <= 1e-2; single scattering loses up to %.3f (alpha %g, mu %g, %s)",
@@ -419,18 +419,18 @@ static void dielectric(void)
         mft_rng r;
         int s0, dof, j, bad = 0;
         double z, pint;
-        mf_dielectric_ms_build(&t, &d, MF_R(1.5), 16, 2);
+        mf_dielectric_ms_table_build(&t, &d, MF_R(1.5), 16, 2);
         for (s0 = 0; s0 < 2; ++s0) {
             mf_vec3 wo = view(0.5, 0.2);
             if (s0) wo.z = -wo.z;
             mft_seed(&r, 5 + s0);
             for (i = 0; i < 160; ++i) obs[i] = 0.0;
             for (i = 0; i < 160; ++i) {
-                double share = (double)mf_dielectric_ms_pdf(&t, wo, mf_vec3_make(0, 0, i >= 80 ? -1 : 1)) * 3.14159265358979324;
+                double share = (double)mf_dielectric_ms_table_pdf(&t, wo, mf_vec3_make(0, 0, i >= 80 ? -1 : 1)) * 3.14159265358979324;
                 ex[i] = 200000.0 * share / 80.0;
             }
             for (i = 0; i < 200000; ++i) {
-                mf_vec3 wi = mf_dielectric_ms_sample(&t, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                mf_vec3 wi = mf_dielectric_ms_table_sample(&t, wo, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
                 double ph = atan2((double)wi.y, (double)wi.x), az = fabs((double)wi.z);
                 int b0, b1;
                 if (wi.z == 0) continue;
@@ -455,14 +455,14 @@ static void dielectric(void)
                             for (q = 0; q < 8; ++q) {
                                 double ph = 6.283185307179586 * (q + 0.5) / 8.0;
                                 pint += gw[j] / 8.0 * 6.283185307179586 / 8.0 *
-                                        (double)mf_dielectric_ms_pdf(&t, wo, mf_vec3_make((mf_real)(sn * cos(ph)), (mf_real)(sn * sin(ph)), (mf_real)(sd ? -mu : mu)));
+                                        (double)mf_dielectric_ms_table_pdf(&t, wo, mf_vec3_make((mf_real)(sn * cos(ph)), (mf_real)(sn * sin(ph)), (mf_real)(sd ? -mu : mu)));
                             }
                         }
                 if (fabs(pint - 1.0) > 1e-5) ++bad;
             }
         }
         CHECKV(bad == 0, "mf_dielectric_ms_pdf integrates to 1 over the sphere from both sides");
-        mf_dielectric_ms_release(&t);
+        mf_dielectric_ms_table_release(&t);
     }
     /* bad input, degenerate directions */
     {
@@ -471,28 +471,28 @@ static void dielectric(void)
         const double inf = HUGE_VAL, nan = inf - inf;
         int ok = 1, bad = 0, a, b;
         mf_vec3 dirs[6];
-        ok &= mf_dielectric_ms_build(NULL, &d, MF_R(1.5), 8, 1) == MF_ERROR_INVALID_ARGUMENT;
-        ok &= mf_dielectric_ms_build(&t, &d, (mf_real)nan, 8, 1) == MF_ERROR_INVALID_ARGUMENT && t.E == NULL;
-        ok &= mf_dielectric_ms_build(&t, &d, MF_R(0.0), 8, 1) == MF_ERROR_INVALID_ARGUMENT;
-        ok &= mf_dielectric_ms_build(&t, &d, MF_R(1.5), 1, 1) == MF_ERROR_INVALID_ARGUMENT;
-        ok &= mf_dielectric_ms_build(&t, &d, MF_R(1.5), 8, 65) == MF_ERROR_INVALID_ARGUMENT;
-        ok &= mf_dielectric_albedo(&t, view(0.5, 0.0)) == 0 && mf_dielectric_bsdf_ms(NULL, view(0.5, 0.0), view(0.5, 0.0)) == 0;
-        mf_dielectric_ms_release(NULL);
+        ok &= mf_dielectric_ms_table_build(NULL, &d, MF_R(1.5), 8, 1) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_table_build(&t, &d, (mf_real)nan, 8, 1) == MF_ERROR_INVALID_ARGUMENT && t.E == NULL;
+        ok &= mf_dielectric_ms_table_build(&t, &d, MF_R(0.0), 8, 1) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_table_build(&t, &d, MF_R(1.5), 1, 1) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_table_build(&t, &d, MF_R(1.5), 8, 65) == MF_ERROR_INVALID_ARGUMENT;
+        ok &= mf_dielectric_ms_table_albedo(&t, view(0.5, 0.0)) == 0 && mf_dielectric_ms_table_bsdf(NULL, view(0.5, 0.0), view(0.5, 0.0), MF_RADIANCE) == 0;
+        mf_dielectric_ms_table_release(NULL);
         CHECKV(ok, "mf_dielectric_ms_build: bad arguments are MF_ERROR_INVALID_ARGUMENT, nothing allocated");
-        mf_dielectric_ms_build(&t, &d, MF_R(1.5), 8, 1);
+        mf_dielectric_ms_table_build(&t, &d, MF_R(1.5), 8, 1);
         dirs[0] = mf_vec3_make(0, 0, 1); dirs[1] = mf_vec3_make(1, 0, 0); dirs[2] = mf_vec3_make(0, 0, -1);
         dirs[3] = mf_vec3_make((mf_real)nan, 0, 1); dirs[4] = mf_vec3_make(0, 0, (mf_real)inf); dirs[5] = mf_vec3_make(0, 0, 0);
         for (a = 0; a < 6; ++a) {
-            double e = mf_dielectric_albedo(&t, dirs[a]), ei = mf_dielectric_albedo_integrate(&d, dirs[a], (mf_real)(a == 1 ? nan : 1.5), 1);
-            mf_vec3 w = mf_dielectric_ms_sample(&t, dirs[a], (mf_real)nan, MF_R(0.5), (mf_real)inf);
+            double e = mf_dielectric_ms_table_albedo(&t, dirs[a]), ei = mf_dielectric_albedo_integrate(&d, dirs[a], (mf_real)(a == 1 ? nan : 1.5), 1);
+            mf_vec3 w = mf_dielectric_ms_table_sample(&t, dirs[a], MF_RADIANCE, (mf_real)nan, MF_R(0.5), (mf_real)inf).wi;
             double l = (double)w.x * w.x + (double)w.y * w.y + (double)w.z * w.z;
             if (!(e >= 0 && e <= 1) || !(ei >= 0 && ei <= 1) || !mft_finite(l) || !(l == 0.0 || fabs(l - 1.0) < 1e-4)) ++bad;
             for (b = 0; b < 6; ++b) {
-                double f = mf_dielectric_bsdf_ms(&t, dirs[a], dirs[b]), p = mf_dielectric_ms_pdf(&t, dirs[a], dirs[b]);
+                double f = mf_dielectric_ms_table_bsdf(&t, dirs[a], dirs[b], MF_RADIANCE), p = mf_dielectric_ms_table_pdf(&t, dirs[a], dirs[b]);
                 if (!mft_finite(f) || f < 0 || !mft_finite(p) || p < 0) ++bad;
             }
         }
-        mf_dielectric_ms_release(&t);
+        mf_dielectric_ms_table_release(&t);
         CHECKV(bad == 0, "dielectric compensation functions: finite, E in [0, 1], f and pdf >= 0 on degenerate input");
     }
 }

@@ -198,7 +198,7 @@ static double texel_C(double alpha, const mf_ndf *shadow, mf_vec3 wo, mf_vec3 wi
     mf_ndf d = mf_beckmann((mf_real)alpha, (mf_real)alpha);
     double g = 1;
     if (!(wo.z > 0) || !(wi.z > 0)) return 0;
-    mf_frame(t, &tt, &tb);
+    { mf_basis fr_ = mf_basis_from_normal(t); tt = fr_.t; tb = fr_.b; }
     o = mf_vec3_make(mf_dot(wo, tt), mf_dot(wo, tb), mf_dot(wo, t));
     i = mf_vec3_make(mf_dot(wi, tt), mf_dot(wi, tb), mf_dot(wi, t));
     if (!(o.z > 0) || !(i.z > 0)) return 0;
@@ -634,7 +634,7 @@ static void test_texel_contribution(void)
                 mf_ndf lobe = mf_beckmann((mf_real)(2 * alphas[a]), (mf_real)(2 * alphas[a]));
                 mf_vec3 tt, tbb, mm;
                 double want, got, rev;
-                mf_frame(tb, &tt, &tbb);
+                { mf_basis fr_ = mf_basis_from_normal(tb); tt = fr_.t; tbb = fr_.b; }
                 mm = mf_sample_D(&lobe, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
                 m = mf_normalize(mf_add(mf_add(mf_scale(tt, mm.x), mf_scale(tbb, mm.y)), mf_scale(tb, mm.z)));
                 wi = mf_reflect(wo, m);
@@ -670,7 +670,7 @@ static void test_texel_contribution(void)
         mf_ibm_set_shadowing(&ibm, NULL);
         for (q = 0; q < 300; ++q) {
             mf_vec3 wo = mft_dir(1.5 * mft_u01(&r), 2 * PI_D * mft_u01(&r));
-            mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+            mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
             double want = (double)mf_brdf(&d, wo, wi);
             if (!(wi.z > 0)) continue;
             if (!in_neighbourhood(ibm.res, 2, mf_vec3_make(0, 0, 1), mf_normalize(mf_add(wo, wi)))) want = 0;
@@ -708,7 +708,7 @@ static void test_convergence(void)
         g = mf_sample_D(&lobe, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
         {
             mf_vec3 tt, tb;
-            mf_frame(t, &tt, &tb);
+            { mf_basis fr_ = mf_basis_from_normal(t); tt = fr_.t; tb = fr_.b; }
             g = mf_normalize(mf_add(mf_add(mf_scale(tt, g.x), mf_scale(tb, g.y)), mf_scale(t, g.z)));
         }
         wos[q] = wo;
@@ -814,7 +814,7 @@ static void check_sampling(const char *name, const mf_ibm *ibm, const mf_footpri
     tot = h_cells(ibm->res, sub, wo, q_pdf, &qc, prob);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
-        mf_vec3 wi = mf_ibm_sample(ibm, f, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = mf_ibm_sample(ibm, f, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
         mf_vec3 h;
         double p;
         if (!(wi.z > 0)) { obs[nc * nc] += 1; continue; }
@@ -824,7 +824,7 @@ static void check_sampling(const char *name, const mf_ibm *ibm, const mf_footpri
         p = (double)mf_ibm_pdf(ibm, f, wo, wi);
         if (!(p > 0)) ++zero_pdf;
         if (i % 16 == 0) {
-            mf_real pp, ff = mf_ibm_brdf_pdf(ibm, f, wo, wi, &pp);
+            mf_real pp, ff = mf_ibm_brdf_and_pdf(ibm, f, wo, wi, &pp);
             if (fabs((double)pp - p) > 1e-12 * p || fabs((double)(ff - mf_ibm_brdf(ibm, f, wo, wi))) > 1e-12 * (double)ff) ++bad_pair;
         }
     }
@@ -920,7 +920,7 @@ static void test_save_load(void)
         mf_footprint f = fp_random(&r, q % 7, W);
         mf_vec3 wo = mft_dir(1.2 * mft_u01(&r), 6.28 * mft_u01(&r)), wi = mft_dir(1.2 * mft_u01(&r), 6.28 * mft_u01(&r));
         mf_real pa, pb;
-        if (mf_ibm_brdf_pdf(&a, &f, wo, wi, &pa) != mf_ibm_brdf_pdf(&b, &f, wo, wi, &pb) || pa != pb) same = 0;
+        if (mf_ibm_brdf_and_pdf(&a, &f, wo, wi, &pa) != mf_ibm_brdf_and_pdf(&b, &f, wo, wi, &pb) || pa != pb) same = 0;
     }
     MFT_CHECK(same, "load: queries of the loaded map equal the built one's");
     mf_ibm_release(&b);
@@ -1012,7 +1012,7 @@ static void test_degenerate(void)
         for (j = 0; j < 40; ++j) {
             mf_vec3 wo = mft_dir(1.55 * (j % 8) / 7.0, j), wi = mft_dir(1.55 * (j / 8) / 4.0, -j);
             mf_real v = mf_ibm_brdf(&ibm, &bad[i], wo, wi) + mf_ibm_pdf(&ibm, &bad[i], wo, wi);
-            mf_vec3 s = mf_ibm_sample(&ibm, &bad[i], wo, MF_R(0.3), MF_R(0.9), MF_R(1.0), MF_R(0.0));
+            mf_vec3 s = mf_ibm_sample(&ibm, &bad[i], wo, MF_R(0.3), MF_R(0.9), MF_R(1.0), MF_R(0.0)).wi;
             if (!mft_finite((double)v) || !mft_finite((double)s.x + (double)s.y + (double)s.z)) ++nonfinite;
             if (!mft_finite((double)mf_ibm_bin_weight(&ibm, j, &bad[i]))) ++nonfinite;
         }
@@ -1020,10 +1020,10 @@ static void test_degenerate(void)
     if (mf_ibm_brdf(&ibm, &f, down, up) != 0 || mf_ibm_brdf(&ibm, &f, up, down) != 0) ++nonzero;
     if (mf_ibm_pdf(&ibm, &f, down, up) != 0 || mf_ibm_pdf(&ibm, &f, up, down) != 0) ++nonzero;
     if (mf_ibm_brdf(&ibm, &f, zero, up) != 0 || mf_ibm_brdf(&ibm, &f, nanv, up) != 0 || mf_ibm_pdf(&ibm, &f, up, nanv) != 0) ++nonzero;
-    if (mf_ibm_sample(&ibm, &f, down, MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).z != 0) ++nonzero;
-    if (mf_ibm_sample(&ibm, NULL, up, MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).z != 0) ++nonzero;
+    if (mf_ibm_sample(&ibm, &f, down, MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).wi.z != 0) ++nonzero;
+    if (mf_ibm_sample(&ibm, NULL, up, MF_R(0.5), MF_R(0.5), MF_R(0.5), MF_R(0.5)).wi.z != 0) ++nonzero;
     if (mf_ibm_brdf(&empty, &f, up, up) != 0 || mf_ibm_brdf(NULL, &f, up, up) != 0 || mf_ibm_pdf(NULL, &f, up, up) != 0) ++nonzero;
-    if (mf_ibm_brdf_pdf(NULL, &f, up, up, &pdf) != 0 || pdf != 0 || mf_ibm_sample(NULL, &f, up, 0, 0, 0, 0).z != 0) ++nonzero;
+    if (mf_ibm_brdf_and_pdf(NULL, &f, up, up, &pdf) != 0 || pdf != 0 || mf_ibm_sample(NULL, &f, up, 0, 0, 0, 0).wi.z != 0) ++nonzero;
     if (mf_ibm_bin_count(NULL) != 0 || mf_ibm_bin_of(NULL, up) != -1 || mf_ibm_texel_bin(NULL, 0, 0) != -1 ||
         mf_ibm_bin_texels(&ibm, -3) != 0 || mf_ibm_memory_bytes(NULL) != 0) ++nonzero;
     MFT_CHECK(nonzero == 0, "below the horizon, NULL and empty maps: 0 and no sample");

@@ -78,7 +78,7 @@ static int hits(const mf_vec3 *p, int n, mf_vec3 w, int two_sided)
     if (t <= 0.0) return 0;
     if (!two_sided && mf_dot(nrm, c) >= 0) return 0;   /* back face: Newell normal points away from the origin */
     x = mf_scale(w, (mf_real)t);
-    mf_frame(mf_normalize(nrm), &u, &v);
+    { mf_basis fr_ = mf_basis_from_normal(mf_normalize(nrm)); u = fr_.t; v = fr_.b; }
     px = mf_dot(x, u); py = mf_dot(x, v);
     for (i = 0, j = n - 1; i < n; j = i++) {   /* crossing number */
         double xi = mf_dot(p[i], u), yi = mf_dot(p[i], v), xj = mf_dot(p[j], u), yj = mf_dot(p[j], v);
@@ -161,7 +161,7 @@ static double brdf_polygon_mc(const mf_ndf *d, mf_vec3 wo, const mf_vec3 *p, int
     double s = 0, s2 = 0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r));
+        mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r)).wi;
         double w = 0;
         if (wi.z > 0 && hits(p, n, wi, 1)) w = mf_brdf_sample_weight(d, wo, wi);
         s += w; s2 += w * w;
@@ -188,7 +188,7 @@ static void test_ggx_table(mft_rng *r)
                 /* a quad around the mirror direction (k = 0) or beside it (k = 1), 2 units away */
                 mf_vec3 cdir = k == 0 ? refl : mf_normalize(mf_vec3_make((mf_real)(-0.3 * st), 0.5f, (mf_real)ct)), u, v;
                 double size = 0.3 + 1.2 * alphas[a];
-                mf_frame(cdir, &u, &v);
+                { mf_basis fr_ = mf_basis_from_normal(cdir); u = fr_.t; v = fr_.b; }
                 p[0] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)-size)));
                 p[1] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)size)));
                 p[2] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)size)));
@@ -211,7 +211,7 @@ static void test_ggx_table(mft_rng *r)
             mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
             mf_vec3 wo = mf_vec3_make((mf_real)sqrt(1 - ct * ct), 0, (mf_real)ct);
             for (i = 0; i < 400000; ++i) {
-                mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r));
+                mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r)).wi;
                 double w = wi.z > 0 ? (double)mf_brdf_sample_weight(&d, wo, wi) : 0.0;
                 s1 += w; s2 += w * w;
             }
@@ -331,7 +331,7 @@ static void test_fitter(void)
     double worst = 0;
     int i;
     /* a Lambertian callback fits the clamped cosine itself, albedo 1 */
-    MFT_CHECK(mf_ltc_fit(NULL, lambert_cos, NULL, MF_R(0.8), NULL, &r) == MF_SUCCESS, "fit a user BRDF callback");
+    MFT_CHECK(mf_ltc_fit(&r, NULL, lambert_cos, NULL, MF_R(0.8), NULL) == MF_SUCCESS, "fit a user BRDF callback");
     MFT_NEAR(r.albedo, 1.0, 1e-3, 0, "Lambertian albedo 1");
     for (i = 0; i < 50; ++i) {
         w = mft_dir(1.5 * i / 50.0, 0.3 * i);
@@ -343,14 +343,14 @@ static void test_fitter(void)
         mf_ltc_fit_result a, b;
         mf_vec3 q[4];
         square(q, 1.0, 0.6, -0.8, 0.0);
-        mf_ltc_fit(&d, NULL, NULL, wo.z, NULL, &a);
-        mf_ltc_fit(NULL, ggx_cos, &d, wo.z, NULL, &b);
+        mf_ltc_fit(&a, &d, NULL, NULL, wo.z, NULL);
+        mf_ltc_fit(&b, NULL, ggx_cos, &d, wo.z, NULL);
         MFT_NEAR(a.albedo, b.albedo, 0.02, 0, "GGX albedo: BRDF sampling vs cosine sampling");
         MFT_NEAR(mf_ltc_integrate(&a.ltc, q, 4, 1), mf_ltc_integrate(&b.ltc, q, 4, 1), 0.05, 0.01, "GGX fit: callback vs mf_ndf");
     }
     /* bad input, and a small Beckmann table */
-    MFT_CHECK(mf_ltc_fit(NULL, NULL, NULL, MF_R(0.5), NULL, &r) == MF_ERROR_INVALID_ARGUMENT, "fit without a BRDF rejected");
-    MFT_CHECK(mf_ltc_fit(&d, NULL, NULL, MF_R(0.0), NULL, &r) == MF_ERROR_INVALID_ARGUMENT, "fit at cos 0 rejected");
+    MFT_CHECK(mf_ltc_fit(&r, NULL, NULL, NULL, MF_R(0.5), NULL) == MF_ERROR_INVALID_ARGUMENT, "fit without a BRDF rejected");
+    MFT_CHECK(mf_ltc_fit(&r, &d, NULL, NULL, MF_R(0.0), NULL) == MF_ERROR_INVALID_ARGUMENT, "fit at cos 0 rejected");
     MFT_CHECK(mf_ltc_table_build(&t, MF_NDF_BECKMANN, 0, 1, 4, NULL, NULL) == MF_ERROR_INVALID_ARGUMENT && t.data == NULL,
               "table of 1 column rejected, nothing allocated");
     MFT_CHECK(mf_ltc_table_build(&t, MF_NDF_BECKMANN, 0, 4, 4, NULL, NULL) == MF_SUCCESS, "Beckmann 4 x 4 table");
@@ -369,7 +369,7 @@ static void test_fitter(void)
 static void square_at(mf_vec3 *p, mf_vec3 c, double h)
 {
     mf_vec3 u, v;
-    mf_frame(c, &u, &v);
+    { mf_basis fr_ = mf_basis_from_normal(c); u = fr_.t; v = fr_.b; }
     p[0] = mf_add(c, mf_add(mf_scale(u, (mf_real)-h), mf_scale(v, (mf_real)-h)));
     p[1] = mf_add(c, mf_add(mf_scale(u, (mf_real)-h), mf_scale(v, (mf_real)h)));
     p[2] = mf_add(c, mf_add(mf_scale(u, (mf_real)h), mf_scale(v, (mf_real)h)));
@@ -400,7 +400,7 @@ static void test_off_node(void)
                 mf_ltc_fit_result fr;
                 mf_ndf d = mf_beckmann((mf_real)al, (mf_real)al);
                 mf_ltc l = mf_ltc_beckmann((mf_real)ct, (mf_real)al), lo;
-                mf_ltc_fit(&d, NULL, NULL, (mf_real)ct, NULL, &fr);
+                mf_ltc_fit(&fr, &d, NULL, NULL, (mf_real)ct, NULL);
                 {   /* the old blend: entries over the last one, i.e. [a/d3 0 b/d3; 0 1/d3 0; c/d3 0 1] */
                     int ix = cols[ci], iy = rows[ri], k, c2;
                     double fx = 0.5 * half, fy = 0.5 * half, w[4], o[5] = { 0, 0, 0, 0, 0 };
@@ -454,7 +454,7 @@ static mf_vec3 at_angle(mf_vec3 a, double t, mft_rng *r)
 {
     mf_vec3 u, v;
     double p = 2 * PI_D * mft_u01(r);
-    mf_frame(a, &u, &v);
+    { mf_basis fr_ = mf_basis_from_normal(a); u = fr_.t; v = fr_.b; }
     return mf_normalize(mf_add(mf_scale(a, (mf_real)cos(t)), mf_add(mf_scale(u, (mf_real)(sin(t) * cos(p))), mf_scale(v, (mf_real)(sin(t) * sin(p))))));
 }
 
@@ -590,7 +590,7 @@ static void test_polygon_exact(mft_rng *r)
                 p[k] = mf_scale(mft_dir(acos(2 * mft_u01(r) - 1), 2 * PI_D * mft_u01(r)), (mf_real)(0.5 + mft_u01(r)));
         } else {           /* convex, planar: a rectangle or a regular n-gon in a random plane */
             nrm = mft_dir(acos(2 * mft_u01(r) - 1), 2 * PI_D * mft_u01(r));
-            mf_frame(nrm, &u, &v);
+            { mf_basis fr_ = mf_basis_from_normal(nrm); u = fr_.t; v = fr_.b; }
             for (k = 0; k < n; ++k) {
                 double a = 2 * PI_D * k / n, w = shape == 0 ? 1.0 : 0.5 + mft_u01(r);
                 p[k] = mf_add(c, mf_add(mf_scale(u, (mf_real)(size * cos(a))), mf_scale(v, (mf_real)(size * w * sin(a)))));
@@ -1193,7 +1193,7 @@ static void test_beckmann_table(mft_rng *r)
                     mf_vec3 wo = mf_vec3_make((mf_real)st, 0, (mf_real)ct), p[4], u, v;
                     mf_vec3 cdir = k == 0 ? mf_vec3_make((mf_real)-st, 0, (mf_real)ct) : mf_normalize(mf_vec3_make((mf_real)(-0.3 * st), 0.5f, (mf_real)ct));
                     mf_ltc l = mf_ltc_beckmann((mf_real)ct, (mf_real)alphas[a]);
-                    mf_frame(cdir, &u, &v);
+                    { mf_basis fr_ = mf_basis_from_normal(cdir); u = fr_.t; v = fr_.b; }
                     p[0] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)-size)));
                     p[1] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)size)));
                     p[2] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)size)));

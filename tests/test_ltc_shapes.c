@@ -92,7 +92,7 @@ static double cylinder_quad(dir_fn f, const void *ctx, mf_vec3 p1, mf_vec3 p2, d
     int a, i, b, j, k;
     const int NT = 48, NP = 48;
     for (k = 0; k < 3; ++k) T[k] /= L;
-    mf_frame(v3(T[0], T[1], T[2]), &e1, &e2);
+    { mf_basis fr_ = mf_basis_from_normal(v3(T[0], T[1], T[2])); e1 = fr_.t; e2 = fr_.b; }
     for (a = 0; a < NT; ++a)
         for (i = 0; i < 16; ++i) {
             double t = L * (a + gx16[i]) / NT;
@@ -305,7 +305,7 @@ static void test_true_brdf(void)
             mf_vec3 c = v3(-2 * st_, 0.3, 2 * cts[ic]), nrm = mf_normalize(mf_scale(c, MF_R(-1.0))), e1, e2;
             b.d = mf_ggx((mf_real)alphas[ia], (mf_real)alphas[ia]);
             b.wo = v3(st_, 0, cts[ic]);
-            mf_frame(nrm, &e1, &e2);
+            { mf_basis fr_ = mf_basis_from_normal(nrm); e1 = fr_.t; e2 = fr_.b; }
             {   /* quadrature of f cos over the disk of radius 0.5 */
                 int a, i, q, j;
                 wd = 0;

@@ -179,7 +179,7 @@ static void test_values(void)
     MFT_NEAR(mf_fresnel_conductor(0.6f, 1.5f, 0.0f), mf_fresnel_dielectric(0.6f, 1.5f), MFT_TOL(1e-12, 1e-5), 0,
              "conductor with k = 0 is the dielectric");
     MFT_NEAR(mf_fresnel_conductor(0.0f, MF_R(0.2), 3.0f), 1.0, MFT_TOL(1e-9, 1e-5), 0, "conductor grazing -> 1");
-    MFT_NEAR(mf_fresnel_schlick(0.04f, 0.5f), 0.04 + 0.96 * 0.03125, 1e-6, 0, "Schlick");
+    MFT_NEAR(mf_fresnel_schlick(0.5f, 0.04f), 0.04 + 0.96 * 0.03125, 1e-6, 0, "Schlick");
 }
 
 /* Slope density P22 at squared slope radius x, written here in double

@@ -47,7 +47,7 @@ static void fz_generic(const mf_ndf *d, fz_in *in)
     FZ_VEC(s, "sample_D");
     s = mf_sample_visible(d, wo, u1, u2);
     FZ_VEC(s, "sample_visible");
-    s = mf_brdf_sample(d, wo, u1, u2);
+    s = mf_brdf_sample(d, wo, u1, u2).wi;
     FZ_VEC(s, "brdf_sample");
     if (s.z > MF_R(0.0) && !(mf_brdf_pdf(d, wo, s) > MF_R(0.0))) FZ_FAIL("pdf of a returned sample is 0");
 }
@@ -88,9 +88,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 mf_real x = mf_ibm_bin_weight(&ibm, b < 0 ? 0 : b, &f);
                 if (!(x >= MF_R(0.0) && x <= MF_R(1.0001))) FZ_FAIL("bin weight %g", (double)x);
             }
-            FZ_NONNEG(mf_ibm_brdf_pdf(&ibm, &f, wo, wi, &pdf), "ibm brdf");
+            FZ_NONNEG(mf_ibm_brdf_and_pdf(&ibm, &f, wo, wi, &pdf), "ibm brdf");
             FZ_NONNEG(pdf, "ibm pdf");
-            wi = mf_ibm_sample(&ibm, &f, wo, fz_unit(&in), fz_unit(&in), fz_unit(&in), fz_unit(&in));
+            wi = mf_ibm_sample(&ibm, &f, wo, fz_unit(&in), fz_unit(&in), fz_unit(&in), fz_unit(&in)).wi;
             FZ_VEC(wi, "ibm sample");
             mf_ibm_release(&ibm);
         }

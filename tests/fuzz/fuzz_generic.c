@@ -89,7 +89,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FZ_VEC(s, "sample_D");
     s = mf_sample_visible(&d, wo, u1, u2);
     FZ_VEC(s, "sample_visible");
-    s = mf_brdf_sample(&d, wo, u1, u2);
+    s = mf_brdf_sample(&d, wo, u1, u2).wi;
     FZ_VEC(s, "brdf_sample");
     if (s.z > MF_R(0.0)) {
         mf_real p = mf_brdf_pdf(&d, wo, s), w = mf_brdf_sample_weight(&d, wo, s), f = mf_brdf(&d, wo, s);

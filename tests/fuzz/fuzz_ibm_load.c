@@ -31,9 +31,9 @@ static void fz_query(const mf_ibm *ibm, fz_in *in)
     wi = mf_normalize(mf_vec3_make(fz_real(in), fz_real(in), MF_R(1.0)));
     FZ_NONNEG(mf_ibm_brdf(ibm, &f, wo, wi), "ibm_brdf");
     FZ_NONNEG(mf_ibm_pdf(ibm, &f, wo, wi), "ibm_pdf");
-    FZ_NONNEG(mf_ibm_brdf_pdf(ibm, &f, wo, wi, &pdf), "ibm_brdf_pdf");
+    FZ_NONNEG(mf_ibm_brdf_and_pdf(ibm, &f, wo, wi, &pdf), "ibm_brdf_pdf");
     FZ_NONNEG(pdf, "ibm_brdf_pdf pdf");
-    s = mf_ibm_sample(ibm, &f, wo, fz_unit(in), fz_unit(in), fz_unit(in), fz_unit(in));
+    s = mf_ibm_sample(ibm, &f, wo, fz_unit(in), fz_unit(in), fz_unit(in), fz_unit(in)).wi;
     FZ_VEC(s, "ibm_sample");
 }
 
