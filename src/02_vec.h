@@ -125,12 +125,13 @@ MF_FORCE_INLINE mf_vec3 mf_mat2_apply_transpose(mf_mat2 a, mf_vec3 v)
 }
 
 /* A direction with density max(0, w.z) / pi (cosine-weighted hemisphere,
- * Malley's method) from u1, u2 in [0, 1] (u1 = 1 read as MF_U_MAX, so z > 0
- * unless u1 is NaN: then z = 0). */
+ * Malley's method) from u1, u2 in [0, 1] (u1 = 1 read as MF_U_MAX, so
+ * z > 0; NaN reads as 0). */
 MF_INLINE mf_vec3 mf__sample_cosine(mf_real u1, mf_real u2)
 {
     mf_real r, phi;
     u1 = mf_clamp(u1, MF_R(0.0), MF_U_MAX);
+    u2 = mf_clamp(u2, MF_R(0.0), MF_R(1.0));   /* NaN: 0 */
     r = MF_SQRT(u1);
     phi = MF_R(2.0) * MF_PI * u2;
     return mf_vec3_make(r * MF_COS(phi), r * MF_SIN(phi), MF_SQRT(mf_max(MF_R(1.0) - u1, MF_R(0.0))));

@@ -124,6 +124,24 @@ static inline void mft_tu_values(double *out)
 }
 void mft_tu_values_main(double *out);   /* tests/main.c */
 
+#ifndef MF_NO_IBM
+/* IBM build options (resolution, cut) for mf_ibm_build_ex, and the bytes a
+ * saved map needs (mf_ibm_save's size query) */
+static inline const mf_ibm_options *mft_ibm_o(int resolution, mf_real cut_sigmas)
+{
+    static mf_ibm_options o;
+    o.resolution = resolution;
+    o.cut_sigmas = cut_sigmas;
+    return &o;
+}
+static inline size_t mft_ibm_bytes(const mf_ibm *ibm)
+{
+    size_t n = 0;
+    mf_ibm_save(ibm, NULL, 0, &n);
+    return n;
+}
+#endif
+
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;
 mf_ndf mft_make(const mft_case *c);

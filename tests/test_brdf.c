@@ -63,14 +63,16 @@ void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long
     memset(obs, 0, sizeof obs);
     mft_seed(&r, seed);
     for (i = 0; i < n; ++i) {
-        mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
+        mf_sample smp = mf_brdf_sample(&d, wo, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = smp.wi;
         double w;
-        if (!(wi.z > 0)) { obs[NA * NP] += 1; continue; }
-        /* weight identity and reciprocity on the sampled pair */
-        w = mf_brdf_sample_weight(&d, wo, wi);
+        if (!(wi.z > 0)) { obs[NA * NP] += 1; if (smp.lobe != MF_LOBE_NONE || smp.pdf != 0 || smp.weight != 0) ++badw; continue; }
+        /* the record against the functions: pdf = mf_brdf_pdf, weight = f cos / pdf; reciprocity */
+        w = smp.weight;
         {
             double f = mf_brdf(&d, wo, wi), pdf = mf_brdf_pdf(&d, wo, wi), fr = mf_brdf(&d, wi, wo);
             if (!(pdf > 0) || fabs(f * wi.z / pdf - w) > MFT_TOL(1e-9, 2e-4) * w) ++badw;
+            if (smp.lobe != MF_LOBE_REFLECTION || fabs((double)smp.pdf - pdf) > MFT_TOL(1e-9, 2e-4) * pdf) ++badw;
             /* LEADR's BRDF normalizes by the mean surface: not reciprocal */
             if (d.type != MF_NDF_LEADR && fabs(f - fr) > MFT_TOL(1e-12, 1e-5) * f) ++badr;
         }
@@ -137,6 +139,7 @@ void test_brdf(void)
         MFT_CHECK(mf_brdf(&d, down, up) == 0 && mf_brdf(&d, up, down) == 0, "brdf 0 below the horizon");
         MFT_CHECK(mf_brdf_pdf(&d, down, up) == 0 && mf_brdf_pdf(&d, up, down) == 0, "pdf 0 below the horizon");
         MFT_CHECK(mf_brdf_sample(&d, down, MF_R(0.5), MF_R(0.5)).wi.z == 0, "no sample for wo below the horizon");
-        MFT_CHECK(mf_brdf_sample_weight(&d, up, down) == 0, "weight 0 below the horizon");
+        MFT_CHECK(mf_brdf_sample(&d, down, MF_R(0.5), MF_R(0.5)).weight == 0 && mf_brdf_sample(&d, down, MF_R(0.5), MF_R(0.5)).pdf == 0,
+                  "no weight, no pdf for wo below the horizon");
     }
 }

@@ -44,7 +44,7 @@ static void dielectric_case(const char *name, const mf_ndf *d, double theta, int
     mf_ndf iso = mf_ggx(MF_R(1.0), MF_R(1.0));
     mf_vec3 wo = mft_dir(theta, 0.4);
     dctx c;
-    mft_rng r;
+    mft_rng r, rb;
     int i, h, nr[2] = { 0, 0 }, dof, badw = 0;
     double tot = 0.0, z, alb_q = 0.0, alb_s = 0.0, alb_s2 = 0.0, se;
     char msg[220];
@@ -61,8 +61,10 @@ static void dielectric_case(const char *name, const mf_ndf *d, double theta, int
     for (h = 0; h < 2; ++h) mft_cells_init(&cells[h], &iso, nr[h] > 10 ? mft_median(rr[h], nr[h]) : 1.0, NA, NP);
     memset(obs, 0, sizeof obs);
     mft_seed(&r, seed);
+    mft_seed(&rb, seed + 1);
     for (i = 0; i < n; ++i) {
-        mf_vec3 wi = mf_dielectric_sample(d, wo, (mf_real)eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
+        mf_sample smp = mf_dielectric_sample(d, wo, (mf_real)eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+        mf_vec3 wi = smp.wi;
         double pdf, f, w, ew;
         int lo;
         if (wi.z == 0) { obs[2 * NC] += 1.0; continue; }
@@ -70,8 +72,18 @@ static void dielectric_case(const char *name, const mf_ndf *d, double theta, int
         obs[lo * NC + mft_cell_of(&cells[lo], mf_vec3_make(wi.x, wi.y, lo ? -wi.z : wi.z))] += 1.0;
         pdf = (double)mf_dielectric_pdf(d, wo, wi, (mf_real)eta);
         f = (double)mf_dielectric_bsdf(d, wo, wi, (mf_real)eta, MF_RADIANCE);
-        w = (double)mf_dielectric_sample_weight(d, wo, wi, (mf_real)eta);
+        w = (double)smp.weight;
         if (!(pdf > 0.0) || !(fabs(w - f * fabs((double)wi.z) / pdf) <= MFT_TOL(1e-6, 2e-3) * (w + 1e-3))) ++badw;
+        if (!(fabs((double)smp.pdf - pdf) <= MFT_TOL(1e-6, 2e-3) * pdf) || smp.lobe != (lo == (wo.z < 0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION)) ++badw;
+        /* importance transport: the same direction, the weight times e^2 on transmission */
+        {
+            mf_sample si = mf_dielectric_sample(d, wo, (mf_real)eta, MF_IMPORTANCE, (mf_real)mft_u01(&rb), (mf_real)mft_u01(&rb), (mf_real)mft_u01(&rb));
+            if (si.lobe == MF_LOBE_TRANSMISSION) {
+                double fi = (double)mf_dielectric_bsdf(d, wo, si.wi, (mf_real)eta, MF_IMPORTANCE), pi = (double)mf_dielectric_pdf(d, wo, si.wi, (mf_real)eta);
+                double e2 = si.wi.z < 0 ? eta * eta : 1.0 / (eta * eta), fr = (double)mf_dielectric_bsdf(d, wo, si.wi, (mf_real)eta, MF_RADIANCE);
+                if (!(fabs(fi - fr * e2) <= MFT_TOL(1e-9, 1e-4) * fi) || !(fabs((double)si.weight - fi * fabs((double)si.wi.z) / pi) <= MFT_TOL(1e-6, 2e-3) * ((double)si.weight + 1e-3))) ++badw;
+            }
+        }
         ew = wi.z * wo.z < 0 ? w * (wo.z > 0 ? eta * eta : 1.0 / (eta * eta)) : w;   /* importance transport */
         alb_s += ew; alb_s2 += ew * ew;
     }
@@ -201,8 +213,9 @@ void test_dielectric(void)
             for (b = 0; b < 5; ++b)
                 for (c = 0; c < 5; ++c) {
                     mf_real f = mf_dielectric_bsdf(&d, ws[a], ws[b], etas[c], MF_RADIANCE), p = mf_dielectric_pdf(&d, ws[a], ws[b], etas[c]);
-                    mf_real w = mf_dielectric_sample_weight(&d, ws[a], ws[b], etas[c]);
-                    mf_vec3 s = mf_dielectric_sample(&d, ws[a], etas[c], MF_RADIANCE, MF_R(0.5), nan, MF_R(0.5)).wi;
+                    mf_sample smp = mf_dielectric_sample(&d, ws[a], etas[c], MF_RADIANCE, MF_R(0.5), nan, MF_R(0.5));
+                    mf_real w = smp.weight;
+                    mf_vec3 s = smp.wi;
                     if (!mft_finite(f) || !mft_finite(p) || !mft_finite(w) || p < 0 || f < 0 || !mft_finite(s.x) || !mft_finite(s.z)) {
                         if (mft_verbose) printf("    degenerate %d %d %d: f %g p %g w %g s %g %g %g\n", a, b, c, (double)f, (double)p, (double)w, (double)s.x, (double)s.y, (double)s.z);
                         ok = 0;

@@ -374,11 +374,11 @@ static void dielectric(void)
                     double s1 = 0.0, s2 = 0.0, e, sig, tot;
                     if (side) wo.z = -wo.z;
                     for (i = 0; i < n; ++i) {
-                        mf_vec3 wi = mf_dielectric_sample(&d, wo, eta, MF_RADIANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r)).wi;
+                        /* importance transport: the record's weight conserves */
+                        mf_sample smp = mf_dielectric_sample(&d, wo, eta, MF_IMPORTANCE, (mf_real)mft_u01(&r), (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
                         double w;
-                        if (wi.x == 0 && wi.y == 0 && wi.z == 0) continue;
-                        w = (double)mf_dielectric_sample_weight(&d, wo, wi, eta);
-                        if ((wo.z > 0) != (wi.z > 0)) { double ee = wo.z > 0 ? 1.5 : 1.0 / 1.5; w *= ee * ee; }
+                        if (smp.lobe == MF_LOBE_NONE) continue;
+                        w = (double)smp.weight;
                         s1 += w; s2 += w * w;
                     }
                     e = s1 / n;

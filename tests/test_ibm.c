@@ -281,10 +281,10 @@ static void test_build_errors(void)
     MFT_CHECK(mf_ibm_build(&ibm, n, 1 << 20, 1, MF_R(0.1)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: too wide");
     MFT_CHECK(mf_ibm_build(&ibm, n, 16, 16, MF_R(0.0)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: alpha 0");
     MFT_CHECK(mf_ibm_build(&ibm, n, 16, 16, (mf_real)sqrt(-1.0)) == MF_ERROR_INVALID_ARGUMENT && !ibm.data, "build: alpha NaN");
-    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), MF_IBM_MAX_RES + 1, 0) == MF_ERROR_INVALID_ARGUMENT, "build: resolution too large");
-    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), -1, 0) == MF_ERROR_INVALID_ARGUMENT, "build: negative resolution");
-    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), 0, MF_R(-1.0)) == MF_ERROR_INVALID_ARGUMENT, "build: negative cut");
-    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), 0, MF_R(11.0)) == MF_ERROR_INVALID_ARGUMENT, "build: cut too large");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), mft_ibm_o(MF_IBM_MAX_RES + 1, 0)) == MF_ERROR_INVALID_ARGUMENT, "build: resolution too large");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), mft_ibm_o(-1, 0)) == MF_ERROR_INVALID_ARGUMENT, "build: negative resolution");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), mft_ibm_o(0, MF_R(-1.0))) == MF_ERROR_INVALID_ARGUMENT, "build: negative cut");
+    MFT_CHECK(mf_ibm_build_ex(&ibm, n, 16, 16, MF_R(0.1), mft_ibm_o(0, MF_R(11.0))) == MF_ERROR_INVALID_ARGUMENT, "build: cut too large");
     for (i = 0; i < 4; ++i) {
         mf_real keep[3];
         int k = 3 * (37 + 50 * i);
@@ -383,9 +383,9 @@ static void test_structure(void)
             if (mf_ibm_build(&t, m, sizes[k][0], sizes[k][1], MF_R(0.1)) != MF_SUCCESS) { ++nbad; free(m); continue; }
             for (i = 0; i < mf_ibm_bin_count(&t); ++i) { sf += (double)mf_ibm_bin_weight(&t, i, &f); sg += (double)mf_ibm_bin_weight(&t, i, &g); }
             if (fabs(sf - 1) > MFT_TOL(1e-12, 1e-5) || fabs(sg - 1) > MFT_TOL(1e-12, 1e-5)) ++nbad;
-            nb = mf_ibm_save(&t, NULL, 0);
+            nb = mft_ibm_bytes(&t);
             buf = (unsigned char *)malloc(nb);
-            mf_ibm_save(&t, buf, nb);
+            mf_ibm_save(&t, buf, nb, &nb);
             if (mf_ibm_load(&l, buf, nb) != MF_SUCCESS) ++nbad;
             mf_ibm_release(&l);
             mf_ibm_release(&t);
@@ -481,9 +481,9 @@ static void test_block_lengths(void)
         for (i = 0; i < 64 * 64; ++i) { fl[3 * i] = 0; fl[3 * i + 1] = 0; fl[3 * i + 2] = 1; }
         mf_ibm_build(&a, fl, 64, 64, MF_R(0.01));
         j = mf_ibm_bin_of(&a, mf_vec3_make(0, 0, 1));
-        bytes = mf_ibm_save(&a, NULL, 0);
+        bytes = mft_ibm_bytes(&a);
         buf = (unsigned char *)malloc(bytes);
-        mf_ibm_save(&a, buf, bytes);
+        mf_ibm_save(&a, buf, bytes, &bytes);
         MFT_CHECK(mf_ibm_bin_texels(&a, j) == 64 * 64 && mf_ibm_load(&b, buf, bytes) == MF_SUCCESS &&
                       fabs((double)mf_ibm_bin_weight(&b, j, &f) - 1.0) < 1e-6,
                   "flat 64x64 map: one bin of every texel, saved and loaded, weight 1");
@@ -721,8 +721,8 @@ static void test_convergence(void)
     for (k = 0; k < 3; ++k) {
         mf_ibm ibm, base;
         double se = 0, sr = 0;
-        mf_ibm_build_ex(&base, n, W, W, (mf_real)alpha, 0, MF_R(5.0));
-        mf_ibm_build_ex(&ibm, n, W, W, (mf_real)alpha, (k + 1) * base.res, MF_R(5.0));
+        mf_ibm_build_ex(&base, n, W, W, (mf_real)alpha, mft_ibm_o(0, MF_R(5.0)));
+        mf_ibm_build_ex(&ibm, n, W, W, (mf_real)alpha, mft_ibm_o((k + 1) * base.res, MF_R(5.0)));
         mf_ibm_set_shadowing(&ibm, NULL);
         for (q = 0; q < 160; ++q) {
             se += fabs((double)mf_ibm_brdf(&ibm, &f, wos[q], wis[q]) - ref[q]);
@@ -859,7 +859,7 @@ static void test_sampling_pdf(void)
     mf_footprint huge = fp_make(0.2, 0.3, 301.0, 17.0, -23.0, 260.0), point = fp_make(0.77, 0.41, 0, 0, 0, 0);
     mf_footprint wrap = fp_make(0.99, 0.02, 0.2, 0.0, 0.0, 0.15);
     mf_ibm_build(&a, s, W, W, MF_R(0.1));
-    mf_ibm_build_ex(&b, s, W, W, MF_R(0.1), 0, MF_R(5.0));
+    mf_ibm_build_ex(&b, s, W, W, MF_R(0.1), mft_ibm_o(0, MF_R(5.0)));
     mf_ibm_build(&c, fl, W, W, MF_R(0.05));
     check_sampling("smooth, footprint 13x10 texels (kd traversal)", &a, &med, mft_dir(0.3, 0.4), 100000, 2, 0, 61);
     check_sampling("smooth, 5-sigma cut", &b, &med, mft_dir(0.3, 0.4), 100000, 2, 1.0, 62);
@@ -907,12 +907,16 @@ static void test_save_load(void)
     for (i = 0; i < (size_t)(W * H); ++i)   /* a flat left half: one bin large enough for a stored kd-tree */
         if ((int)(i % W) < W / 2) { n[3 * i] = 0; n[3 * i + 1] = 0; n[3 * i + 2] = 1; }
     mf_ibm_build(&a, n, W, H, MF_R(0.03));
-    bytes = mf_ibm_save(&a, NULL, 0);
+    bytes = mft_ibm_bytes(&a);
     MFT_CHECK(bytes == mf_ibm_memory_bytes(&a) && bytes > 0, "save: size query");
     buf = (unsigned char *)malloc(bytes + 1);
     cpy = (unsigned char *)malloc(bytes + 1);
-    MFT_CHECK(mf_ibm_save(&a, buf, bytes - 1) == bytes, "save: too small a buffer is left alone and the size returned");
-    mf_ibm_save(&a, buf + 1, bytes);   /* an odd address: load copies, so alignment does not matter */
+    {
+        size_t need = 0;
+        MFT_CHECK(mf_ibm_save(&a, buf, bytes - 1, &need) == MF_ERROR_BUFFER_TOO_SMALL && need == bytes,
+                  "save: too small a buffer is refused and the size returned");
+    }
+    MFT_CHECK(mf_ibm_save(&a, buf + 1, bytes, &bytes) == MF_SUCCESS, "save");   /* an odd address: load copies, so alignment does not matter */
     MFT_CHECK(mf_ibm_load(&b, buf + 1, bytes) == MF_SUCCESS && b.words == a.words &&
               memcmp(a.data, b.data, bytes) == 0, "load: round trip is bit-identical");
     mft_seed(&r, 72);
@@ -982,7 +986,11 @@ static void test_save_load(void)
     mf_ibm_release(&b);
     MFT_CHECK(mf_ibm_load(NULL, buf, bytes) == MF_ERROR_INVALID_ARGUMENT && mf_ibm_load(&b, NULL, bytes) == MF_ERROR_INVALID_ARGUMENT,
               "load: NULL arguments");
-    MFT_CHECK(mf_ibm_save(NULL, buf, bytes) == 0, "save: NULL map");
+    {
+        size_t need = 1;
+        MFT_CHECK(mf_ibm_save(NULL, buf, bytes, &need) == MF_ERROR_INVALID_ARGUMENT && need == 0, "save: NULL map");
+        MFT_CHECK(mf_ibm_save(&a, buf, bytes, NULL) == MF_ERROR_INVALID_ARGUMENT, "save: NULL size");
+    }
     mf_ibm_release(&a);
     free(buf);
     free(cpy);

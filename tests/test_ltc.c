@@ -161,9 +161,9 @@ static double brdf_polygon_mc(const mf_ndf *d, mf_vec3 wo, const mf_vec3 *p, int
     double s = 0, s2 = 0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r)).wi;
+        mf_sample smp = mf_brdf_sample(d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r));
         double w = 0;
-        if (wi.z > 0 && hits(p, n, wi, 1)) w = mf_brdf_sample_weight(d, wo, wi);
+        if (smp.lobe && hits(p, n, smp.wi, 1)) w = smp.weight;
         s += w; s2 += w * w;
     }
     *se = sqrt((s2 / N - (s / N) * (s / N)) / N);
@@ -211,8 +211,7 @@ static void test_ggx_table(mft_rng *r)
             mf_ndf d = mf_ggx((mf_real)al, (mf_real)al);
             mf_vec3 wo = mf_vec3_make((mf_real)sqrt(1 - ct * ct), 0, (mf_real)ct);
             for (i = 0; i < 400000; ++i) {
-                mf_vec3 wi = mf_brdf_sample(&d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r)).wi;
-                double w = wi.z > 0 ? (double)mf_brdf_sample_weight(&d, wo, wi) : 0.0;
+                double w = (double)mf_brdf_sample(&d, wo, (mf_real)mft_u01(r), (mf_real)mft_u01(r)).weight;
                 s1 += w; s2 += w * w;
             }
             m = s1 / 400000; sd = sqrt((s2 / 400000 - m * m) / 400000);

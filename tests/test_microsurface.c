@@ -195,21 +195,32 @@ static void test_validation(void)
     MFT_CHECK(mf_microsurface_generate(&b, 64, -1, 1, h) == MF_ERROR_INVALID_ARGUMENT, "generate: negative iterations");
     MFT_CHECK(mf_microsurface_generate(&z, 64, 1, 1, h) == MF_ERROR_INVALID_ARGUMENT, "generate: zero roughness (invalid struct)");
     MFT_CHECK(mf_microsurface_generate(&lead, 64, 1, 1, h) == MF_ERROR_INVALID_ARGUMENT, "generate: non-centered (LEADR) distribution");
-    mf_microsurface_options_default(&o);
+    memset(&o, 0, sizeof o);
     o.threshold = (mf_real)-1.0;
-    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: negative threshold");
-    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, NULL, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: NULL options");
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, 1, 1, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: negative threshold");
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, 1, 1, NULL, NULL, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: NULL heights");
     o.threshold = MF_MICROSURFACE_THRESHOLD;
     o.max_rematch = MF_R(-0.1);
-    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: negative max_rematch");
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, 1, 1, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: negative max_rematch");
     o.max_rematch = MF_R(1.5);
-    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: max_rematch above 1");
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, 1, 1, &o, h, NULL) == MF_ERROR_INVALID_ARGUMENT, "generate: max_rematch above 1");
     o.max_rematch = MF_R(1.0);   /* the paper's re-matching of every cell above the threshold */
-    o.iterations = 20;
-    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, &o, h, NULL) == MF_SUCCESS, "generate: max_rematch 1 (the paper)");
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 64, 20, 1, &o, h, NULL) == MF_SUCCESS, "generate: max_rematch 1 (the paper)");
     o.max_rematch = MF_R(0.0);
-    o.iterations = 0;
-    MFT_CHECK(mf_microsurface_generate_ex(&b, 8, &o, h, NULL) == MF_SUCCESS, "generate: smallest size, no iteration");
+    MFT_CHECK(mf_microsurface_generate_ex(&b, 8, 0, 1, &o, h, NULL) == MF_SUCCESS, "generate: smallest size, no iteration");
+    {
+        /* NULL options and all-zero options are the defaults: identical surfaces */
+        mf_real *h2 = (mf_real *)malloc(sizeof(mf_real) * 64 * 64);
+        int k, same = 1;
+        memset(&o, 0, sizeof o);
+        mf_microsurface_generate_ex(&b, 64, 3, 5, NULL, h, NULL);
+        mf_microsurface_generate_ex(&b, 64, 3, 5, &o, h2, NULL);
+        for (k = 0; k < 64 * 64; ++k) same = same && h[k] == h2[k];
+        mf_microsurface_generate(&b, 64, 3, 5, h2);
+        for (k = 0; k < 64 * 64; ++k) same = same && h[k] == h2[k];
+        MFT_CHECK(same, "generate_ex: NULL and zero options give mf_microsurface_generate's surface");
+        free(h2);
+    }
 }
 
 static void test_determinism(void)
@@ -234,13 +245,13 @@ static void test_determinism(void)
     MFT_CHECK(differ > n * n / 2, "determinism: another seed gives another surface");
     MFT_NEAR(mean / (n * n), 0.0, 0.0, MFT_TOL(1e-9, 1e-4), "heights have mean 0");
     /* the gradient field stays a permutation of Q_m: same multiset after 0 and 150 iterations */
-    mf_microsurface_options_default(&o);
-    o.seed = 9; o.iterations = 0; o.gradients = g0;
-    mf_microsurface_generate_ex(&d, n, &o, a, NULL);
-    o.iterations = 150; o.gradients = g1;
+    memset(&o, 0, sizeof o);
+    o.gradients = g0;
+    mf_microsurface_generate_ex(&d, n, 0, 9, &o, a, NULL);
+    o.gradients = g1;
     g_calls = g_last = g_total = 0; g_order_ok = 1;
     o.progress = progress;
-    mf_microsurface_generate_ex(&d, n, &o, b, NULL);
+    mf_microsurface_generate_ex(&d, n, 150, 9, &o, b, NULL);
     MFT_CHECK(g_calls == 150 && g_total == 150 && g_last == 150 && g_order_ok, "progress: called once per iteration, in order");
     for (i = 0; i < 2 * n * n; ++i) if (g0[i] == g1[i]) ++differ;
     qsort(g0, (size_t)(2 * n * n), sizeof(mf_real), cmp_real);
@@ -248,8 +259,8 @@ static void test_determinism(void)
     for (i = 0; i < 2 * n * n; ++i) if (g0[i] != g1[i]) perm = 0;
     MFT_CHECK(perm, "re-matching keeps the multiset of sampled slopes Q_m");
     /* independent (not stratified) random numbers: another sampled set */
-    o.progress = NULL; o.iterations = 0; o.gradients = g1; o.stratified = 0;
-    MFT_CHECK(mf_microsurface_generate_ex(&d, n, &o, b, NULL) == MF_SUCCESS, "generate: unstratified samples");
+    o.progress = NULL; o.gradients = g1; o.independent = 1;
+    MFT_CHECK(mf_microsurface_generate_ex(&d, n, 0, 9, &o, b, NULL) == MF_SUCCESS, "generate: unstratified samples");
     qsort(g1, (size_t)(2 * n * n), sizeof(mf_real), cmp_real);
     perm = 1;
     for (i = 0; i < 2 * n * n; ++i) if (g0[i] != g1[i]) perm = 0;
@@ -295,9 +306,9 @@ static mf_real *check_histogram(const char *name, mf_ndf d, double ax, double ay
     double tv0, tv1, rq = 0.0, tol = heavy ? 0.08 : 0.06;
     int i;
     char msg[200];
-    mf_microsurface_options_default(&o);
-    o.iterations = iters; o.seed = seed; o.gradients = g; o.schwarz = e;
-    MFT_CHECK(mf_microsurface_generate_ex(&d, n, &o, h, st) == MF_SUCCESS, "generate");
+    memset(&o, 0, sizeof o);
+    o.gradients = g; o.schwarz = e;
+    MFT_CHECK(mf_microsurface_generate_ex(&d, n, iters, seed, &o, h, st) == MF_SUCCESS, "generate");
     hist_expect(&d, ax, ay, ref);
     tv0 = hist_tv(ref, h, n, 0);
     tv1 = hist_tv(ref, h, n, 1);
@@ -419,7 +430,8 @@ static void test_gonio_exact(void)
     mf_vec3 wi = mf_vec3_make(MF_R(0.6), MF_R(0.0), MF_R(0.8));
     int c, x, y, ok = 1;
     mf_gonio_init(&g, 12);
-    mf_gonio_config_default(&cfg);
+    memset(&cfg, 0, sizeof cfg);
+    cfg.seed = 1;
     /* flat mirror: one bounce, all in the mirror direction's cell */
     cfg.wi = wi; cfg.rays = 20000;
     g_calls = g_last = g_total = 0; g_order_ok = 1;
@@ -432,7 +444,7 @@ static void test_gonio_exact(void)
     MFT_NEAR(g.energy_multi, 0.0, 0.0, 0.0, "gonio: flat mirror, no second bounce");
     MFT_NEAR(g.mean_bounces, 1.0, 1e-12, 0.0, "gonio: flat mirror, one bounce per ray");
     /* flat Lambertian plane, albedo 0.8: cell mass 0.8 (z1^2 - z0^2) / ring cells */
-    cfg.facet = MF_FACET_LAMBERT; cfg.albedo = MF_R(0.8); cfg.rays = 200000;
+    cfg.facet = MF_FACET_LAMBERT; cfg.absorption = MF_R(0.2); cfg.rays = 200000;
     mf_gonio_measure(&g, h, n, &cfg);
     for (c = 0; c < g.cells; ++c) {
         mf_real z0, z1;
@@ -450,7 +462,7 @@ static void test_gonio_exact(void)
     /* 45-degree V-groove along y, normal incidence: two bounces, straight back */
     for (y = 0; y < n; ++y)
         for (x = 0; x < n; ++x) h[y * n + x] = (mf_real)fabs((double)x - n / 2);
-    cfg.facet = MF_FACET_MIRROR; cfg.albedo = MF_R(1.0); cfg.wi = mf_vec3_make(0, 0, 1); cfg.rays = 20000;
+    cfg.facet = MF_FACET_MIRROR; cfg.absorption = MF_R(0.0); cfg.wi = mf_vec3_make(0, 0, 1); cfg.rays = 20000;
     mf_gonio_measure(&g, h, n, &cfg);
     MFT_NEAR(g.multi[0], 1.0, 1e-3, 0.0, "gonio: V-groove sends the light back after two bounces");
     MFT_NEAR(g.mean_bounces, 2.0, 1e-3, 0.0, "gonio: V-groove, two bounces per ray");
@@ -462,12 +474,14 @@ static void test_gonio_exact(void)
     MFT_CHECK(mf_gonio_measure(&g, h, 24, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: size not a power of two");
     cfg.wi = mf_vec3_make(0, 0, -1);
     MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: light below the horizon");
-    cfg.wi = wi; cfg.albedo = MF_R(1.5);
-    MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: albedo above 1");
-    cfg.albedo = MF_R(1.0); cfg.facet = 7;
+    cfg.wi = wi; cfg.absorption = MF_R(1.5);
+    MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: absorption above 1");
+    cfg.absorption = MF_R(-0.5);
+    MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: negative absorption");
+    cfg.absorption = MF_R(0.0); cfg.facet = 7;
     MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: unknown facet kind");
-    cfg.facet = MF_FACET_MIRROR; cfg.rays = 0;
-    MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: no rays");
+    cfg.facet = MF_FACET_MIRROR; cfg.rays = -1;
+    MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_ARGUMENT, "gonio: negative ray count");
     cfg.rays = 10;
     h[5] = (mf_real)(0.0 / (mft_finite(1.0) ? 0.0 : 1.0));
     MFT_CHECK(mf_gonio_measure(&g, h, n, &cfg) == MF_ERROR_INVALID_DATA, "gonio: NaN height");
@@ -488,14 +502,14 @@ static void test_gonio_beckmann(void)
     mf_gonio_config cfg;
     double l1 = 0.0, sm = 0.0, tot;
     int c;
-    mf_microsurface_options_default(&o);
-    o.iterations = 200; o.seed = 11; o.gradients = gr; o.schwarz = e;
-    MFT_CHECK(mf_microsurface_generate_ex(&d, n, &o, h, &st) == MF_SUCCESS, "gonio: Beckmann 0.5 surface");
+    memset(&o, 0, sizeof o);
+    o.gradients = gr; o.schwarz = e;
+    MFT_CHECK(mf_microsurface_generate_ex(&d, n, 200, 11, &o, h, &st) == MF_SUCCESS, "gonio: Beckmann 0.5 surface");
     check_schwarz(h, gr, e, n, &st, 200);
     free(gr); free(e);
     mf_gonio_init(&g, 8);
     model = (mf_real *)malloc(sizeof(mf_real) * g.cells);
-    mf_gonio_config_default(&cfg);
+    memset(&cfg, 0, sizeof cfg);
     cfg.wi = mft_dir(1.0, 0.0);
     cfg.rays = 400000;
     cfg.seed = 3;

@@ -40,8 +40,8 @@ int main(void)
         mf_vec3 ws = mf_brdf_sample(d, wo, MF_R(0.2), MF_R(0.9)).wi;
         s += mf_D(d, wm) + mf_lambda(d, wo) + mf_G1(d, wo, wm) + mf_G2(d, wo, wi, wm) + mf_G2_separable(d, wo, wi, wm);
         s += mf_D_visible(d, wo, wm) + wd.z + ws.z + mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi);
-        s += mf_brdf_sample_weight(d, wo, wi) + mf_projected_area(d, wo) + mf_brdf_pdf_bounded(d, wo, wi);
-        s += mf_ggx_sample_visible_bounded(d, wo, MF_R(0.3), MF_R(0.6)).z;
+        s += mf_brdf_sample(d, wo, MF_R(0.2), MF_R(0.9)).weight + mf_projected_area(d, wo) + mf_brdf_pdf_bounded(d, wo, wi);
+        s += mf_brdf_sample_bounded(d, wo, MF_R(0.3), MF_R(0.6)).pdf;
         s += mf_albedo(d, wo) + mf_albedo_average(d) + mf_brdf_ms(d, wo, wi) + mf_ms_turquin_scale(d, wo, MF_R(0.5));
         s += mf_albedo_integrate(d, wo, 1) + mf_ms_fresnel(MF_R(0.9), MF_R(0.6));
         s += mf_brdf_ms_sample(d, wo, MF_R(0.3), MF_R(0.6)).wi.z + mf_brdf_ms_pdf(d, wo, wi);
@@ -61,7 +61,7 @@ int main(void)
                 s += mf_dielectric_albedo_integrate(d, wo, MF_R(1.5), 1);
             }
         s += mf_dielectric_bsdf(d, wo, wi, MF_R(1.5), MF_RADIANCE) + mf_dielectric_pdf(d, wo, wi, MF_R(1.5));
-        s += mf_dielectric_sample(d, wo, MF_R(1.5), MF_RADIANCE, MF_R(0.2), MF_R(0.7), MF_R(0.5)).wi.z + mf_dielectric_sample_weight(d, wo, wi, MF_R(1.5));
+        s += mf_dielectric_sample(d, wo, MF_R(1.5), MF_RADIANCE, MF_R(0.2), MF_R(0.7), MF_R(0.5)).weight + mf_dielectric_bsdf(d, wo, wi, MF_R(1.5), MF_IMPORTANCE);
     }
     s += mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo) + mf_erfinv(MF_R(0.3));
     s += mf_fresnel_dielectric(MF_R(0.5), MF_R(1.5)) + mf_fresnel_conductor(MF_R(0.5), MF_R(0.2), MF_R(3.0));
@@ -153,7 +153,7 @@ int main(void)
         for (q = 0; q < 16; ++q) { nm[3 * q] = MF_R(0.0); nm[3 * q + 1] = MF_R(0.6) * (mf_real)(q & 1); nm[3 * q + 2] = (q & 1) ? MF_R(0.8) : MF_R(1.0); }
         f.u = MF_R(0.5); f.v = MF_R(0.5); f.ax = MF_R(0.5); f.ay = MF_R(0.0); f.bx = MF_R(0.1); f.by = MF_R(0.5);
         if (mf_ibm_build(&ibm, nm, 4, 4, MF_R(0.1)) == MF_SUCCESS &&
-            mf_ibm_build_ex(&ld, nm, 4, 4, MF_R(0.1), 0, MF_R(3.0)) == MF_SUCCESS) {
+            mf_ibm_build_ex(&ld, nm, 4, 4, MF_R(0.1), (const mf_ibm_options *)0) == MF_SUCCESS) {
             mf_ibm_release(&ld);
             mf_ibm_set_shadowing(&ibm, &k[2]);
             s += mf_ibm_brdf(&ibm, &f, wo, wi) + mf_ibm_pdf(&ibm, &f, wo, wi) + mf_ibm_brdf_and_pdf(&ibm, &f, wo, wi, &pdf);
@@ -162,8 +162,7 @@ int main(void)
             s += (mf_real)mf_ibm_neighbourhood_weights(&ibm, &f, mf_ibm_texel_bin(&ibm, 1, 2), bins, w);
             s += mf_ibm_bin_normal(&ibm, mf_ibm_texel_bin(&ibm, 0, 0)).z + (mf_real)mf_ibm_bin_texels(&ibm, 0);
             s += (mf_real)mf_ibm_memory_bytes(&ibm);
-            nb = mf_ibm_save(&ibm, buf, sizeof buf);
-            if (nb <= sizeof buf && mf_ibm_load(&ld, buf, nb) == MF_SUCCESS) mf_ibm_release(&ld);
+            if (mf_ibm_save(&ibm, buf, sizeof buf, &nb) == MF_SUCCESS && mf_ibm_load(&ld, buf, nb) == MF_SUCCESS) mf_ibm_release(&ld);
             mf_ibm_release(&ibm);
         }
     }
@@ -173,12 +172,12 @@ int main(void)
         mf_microsurface_stats ms;
         mf_gonio go;
         mf_gonio_config gc;
-        mf_microsurface_options_default(&mo);
-        mo.iterations = 2; mo.gradients = gr; mo.schwarz = sw;
+        memset(&mo, 0, sizeof mo);
+        mo.gradients = gr; mo.schwarz = sw;
         s += (mf_real)(mf_microsurface_generate(&k[0], 8, 1, 5u, hm) == MF_SUCCESS);
-        s += (mf_real)(mf_microsurface_generate_ex(&k[1], 8, &mo, hm, &ms) == MF_SUCCESS) + ms.below;
+        s += (mf_real)(mf_microsurface_generate_ex(&k[1], 8, 2, 1u, &mo, hm, &ms) == MF_SUCCESS) + ms.below;
         s += (mf_real)(mf_microsurface_integrate(gr, 8, hm) == MF_SUCCESS);
-        mf_gonio_config_default(&gc);
+        memset(&gc, 0, sizeof gc);
         gc.rays = 100; gc.wi = wo;
         if (mf_gonio_init(&go, 2) == MF_SUCCESS) {
             s += (mf_real)(mf_gonio_measure(&go, hm, 8, &gc) == MF_SUCCESS) + go.energy_first;
@@ -234,6 +233,41 @@ int main(void)
         }
     }
     { mf_basis fr_ = mf_basis_from_normal(wo); t = fr_.t; b = fr_.b; }
+#ifndef MF_NO_DEPRECATED
+    /* the deprecated 0.3 names still compile and run (warnings off here only) */
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+#endif
+    {
+        const mf_ndf *d = &k[1];
+        mf_microsurface_options mo;
+        mf_gonio_config gc;
+        s += mf_brdf_sample_weight(d, wo, wi) + mf_ggx_brdf_pdf_bounded(d, wo, wi);
+        s += mf_ggx_sample_visible_bounded(d, wo, MF_R(0.3), MF_R(0.6)).z + mf_dielectric_sample_weight(d, wo, wi, MF_R(1.5));
+        s += (mf_real)mf_transform_valid(mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0)));
+        mf_frame(wo, &t, &b);
+        mf_microsurface_options_default(&mo);
+        mf_gonio_config_default(&gc);
+        s += t.x + b.y + mo.threshold + gc.absorption;
+        {
+            mf_albedo_table at;
+            mf_dielectric_ms_table dt;
+            at.n_mu = 0; at.n_phi = 0; at.E = 0; at.E_avg = MF_R(0.0);
+            s += mf_brdf_ms_table(&at, wo, wi);
+            if (mf_dielectric_ms_build(&dt, d, MF_R(1.5), 4, 1) == MF_SUCCESS) {
+                s += mf_dielectric_ms_pdf(&dt, wo, wi);
+                mf_dielectric_ms_release(&dt);
+            }
+        }
+#ifndef MF_NO_IBM
+        s += mf_ibm_brdf_pdf((const mf_ibm *)0, (const mf_footprint *)0, wo, wi, (mf_real *)0);
+#endif
+    }
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+#endif
     s += mf_dot(mf_cross(t, b), mf_reflect(wo, wi)) + mft_second();
     return s == s ? 0 : 1;
 }
