@@ -10,7 +10,7 @@ BUILD   := build
 TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/test_sampling.c \
             tests/test_brdf.c tests/test_ltmd.c tests/test_ltc.c tests/test_ltc_shapes.c tests/test_leadr.c \
             tests/test_tabulated.c tests/test_ibm.c tests/test_microsurface.c \
-            tests/test_materials.c tests/test_dielectric.c tests/test_energy.c tests/test_robust.c tests/test_float.c tests/test_tu2.c \
+            tests/test_materials.c tests/test_dielectric.c tests/test_energy.c tests/test_robust.c tests/test_samplers.c tests/test_float.c tests/test_tu2.c \
             tests/test_fuzzfound.c
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)

@@ -1448,6 +1448,11 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec
     z = (MF_R(1.0) - u2) * (MF_R(1.0) + b) - b;              /* cap of the visible hemisphere */
     s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
     h = mf_vec3_make(s * cp + v.x, s * sp + v.y, z + v.z);
+    /* h.v = c.v + 1 >= 0 exactly; near the cap point c = -v (u2 -> 1, the
+     * azimuth opposite v) h vanishes and what rounding leaves may face away
+     * from v: a normal of zero density there, so take (0, 0, 1) instead */
+    if (!(mf_dot(h, v) > MF_R(0.0)) || !(mf_dot(h, h) > MF_R(16.0) * MF_EPS * MF_EPS))
+        return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
     if (!(mf_dot(h, h) > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     return h;
@@ -2054,12 +2059,17 @@ MF_FORCE_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
  * integral <w.m> D(m) dm (thesis Eq. 3.9); finite and positive at w.z = 0.
  * For LEADR moments the mean surface is tilted: (w . (-E_x, -E_y, 1)) (1 +
  * Lambda(w)) (LEADR supplement Eq. 9). */
-MF_FORCE_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
+/* the same for a known lo = Lambda(w) (the samplers share it) */
+MF_FORCE_INLINE mf_real mf__projected_area_l(const mf_ndf *d, mf_vec3 w, mf_real lo)
 {
     mf_real cz;
-    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w)));
+    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + lo));
     cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
-    return mf__cap(cz + cz * mf_lambda(d, w));
+    return mf__cap(cz + cz * lo);
+}
+MF_FORCE_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
+{
+    return mf__projected_area_l(d, w, mf_lambda(d, w));
 }
 
 /* Distribution of visible normals (Heitz & d'Eon 2014 Eq. 2):
@@ -2112,7 +2122,10 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 
 /* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
  * inline, the other kinds out of line. Transformed kinds: the base's visible
- * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). */
+ * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). u2 near 1 reaches the
+ * view's visibility horizon, where w.wm is 0 up to rounding: the lobe
+ * samplers (mf_brdf_sample ...) reject such normals, so their records never
+ * carry a zero pdf. */
 MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
@@ -2187,25 +2200,28 @@ MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 }
 
 /* Samples wi for wo through the visible normals of wo (Heitz & d'Eon 2014)
- * and returns the record: pdf = D_wo(wm) / (4 wo.wm) = D(wm) / (4 A(wo))
- * with A the projected area (Eq. 3.9; mf_brdf_pdf), weight f wi.z / pdf =
- * G2 / G1(wo) = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)). D and the
- * two Lambdas are computed once for the three. No sample (MF_LOBE_NONE) when
- * wo.z <= 0, when the reflection falls below the horizon, or where rounding
- * puts the normal where D underflows (pdf 0). */
+ * and returns the record: pdf = D_wo(wh) / (4 wo.wh) (mf_brdf_pdf, at the
+ * half vector of (wo, wi) as mf_brdf_pdf computes it, so the two agree to
+ * the last bit), weight f wi.z / pdf = G2 / G1(wo) = (1 + Lambda(wo)) /
+ * (1 + Lambda(wo) + Lambda(wi)). D and the two Lambdas are computed once for
+ * the three. No sample (MF_LOBE_NONE) when wo.z <= 0, when the reflection
+ * falls below the horizon, or where rounding puts the normal where D
+ * underflows or wo.wh vanishes (pdf 0). */
 MF_FORCE_INLINE mf_sample mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
     mf_sample s = mf__no_sample();
-    mf_vec3 wm, wi;
-    mf_real lo, li, pdf;
+    mf_vec3 wm, wi, wh;
+    mf_real lo, li, pdf, c;
     if (!(wo.z > MF_R(0.0))) return s;
     wm = mf_sample_visible(d, wo, u1, u2);
     wi = mf_reflect(wo, wm);
-    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(mf_dot(wo, wm) > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y))
-        return s;
+    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y)) return s;
+    wh = mf_normalize(mf_add(wo, wi));
+    c = mf_dot(wo, wh);
+    if (!(c > MF_R(0.0))) return s;
     lo = mf_lambda(d, wo);
     li = mf_lambda(d, wi);
-    pdf = mf__cap(mf_D(d, wm) / (MF_R(4.0) * mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo)));
+    pdf = mf__cap(mf__cap(c * mf_D(d, wh) / mf__projected_area_l(d, wo, lo)) / (MF_R(4.0) * c));
     if (!(pdf > MF_R(0.0))) return s;
     s.wi = wi;
     s.pdf = pdf;
@@ -2251,6 +2267,8 @@ MF_FORCE_INLINE mf_sample mf_brdf_sample_bounded(const mf_ndf *d, mf_vec3 wo, mf
     h = mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
     wi = mf_reflect(wo, h);
     if (!(wi.z > MF_R(0.0)) || !(mf_dot(wo, h) > MF_R(0.0))) return s;
+    h = mf_normalize(mf_add(wo, wi));   /* as mf_brdf_pdf_bounded: the two agree exactly */
+    if (!(mf_dot(wo, h) > MF_R(0.0))) return s;
     den = mf__ggx_bounded_den(d, wo);
     pdf = mf_min(mf_ggx_D(d->ax, d->ay, h) / den, MF_BIG);
     if (!(pdf > MF_R(0.0))) return s;
@@ -2413,56 +2431,62 @@ MF_FORCE_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
     return mf_min((MF_R(1.0) - F) * dv * MF_FABS(mf_dot(wi, h)) / den, MF_BIG);   /* Jacobian |wi.h| / (wi.h + wo.h / e)^2 */
 }
 
+/* The record of a sampled wi: pdf and f as mf_dielectric_pdf and
+ * mf_dielectric_bsdf compute them (the same half vector, so the record and
+ * the functions agree), with D and the two Lambdas computed once. */
+MF_FORCE_INLINE mf_sample mf__dielectric_record(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
+{
+    mf_sample s = mf__no_sample();
+    mf_vec3 h, wo0 = wo, wi0 = wi;
+    mf_real F, oh, den, dm, lo, li, A, dv, p, f;
+    if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return s;
+    dm = mf_D(d, h);
+    lo = mf_lambda(d, wo);
+    li = mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
+    A = mf__projected_area_l(d, wo, lo);
+    dv = mf__cap(oh * dm / A);                                 /* mf_D_visible(d, wo, h) */
+    f = dm / ((MF_R(1.0) + lo + li) * wo.z);                   /* D G2 / wo.z */
+    if (wi.z > MF_R(0.0)) {
+        p = mf_min(F * dv / (MF_R(4.0) * oh), MF_BIG);
+        f = mf_min(F * f / (MF_R(4.0) * wi.z), MF_BIG);
+    } else {
+        p = mf_min((MF_R(1.0) - F) * dv * MF_FABS(mf_dot(wi, h)) / den, MF_BIG);
+        f = (MF_R(1.0) - F) * f * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z);
+        f = mf_min(mode == MF_IMPORTANCE ? f : f / (eta * eta), MF_BIG);
+    }
+    if (!(p > MF_R(0.0))) return s;
+    s.wi = wi0;
+    s.pdf = p;
+    s.weight = mf_min(f * MF_FABS(wi.z) / p, MF_BIG);
+    s.lobe = wo0.z * wi0.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
+}
+
 /* Samples wi (reflected or transmitted) for wo on either side from three
  * uniform numbers (u1, u2 the visible normal of wo's side, u3 the choice
  * between reflection, with probability F(wo.m), and refraction) and returns
  * the record: pdf as mf_dielectric_pdf, weight f |wi.z| / pdf = G2 / G1(wo)
  * = (1 + Lambda(wo)) G2 (LEADR's tilted mean surface: A(wo) G2 / wo.z),
- * divided by e^2 when transmitted in radiance transport. */
+ * divided by e^2 when transmitted in radiance transport. No sample where
+ * rounding leaves wi without density (a grazing refraction whose half
+ * vector no longer faces both directions). */
 MF_FORCE_INLINE mf_sample mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
                                                mf_real u1, mf_real u2, mf_real u3)
 {
-    mf_sample s = mf__no_sample();
-    mf_vec3 m, wi;
-    mf_real sg = MF_R(1.0), F, c, lo, li, A, p, dm, w;
-    int refl;
-    if (!mf__dielectric_ok(wo, eta)) return s;
-    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; sg = MF_R(-1.0); }
-    m = mf_sample_visible(d, wo, u1, u2);
-    c = mf_dot(wo, m);
-    if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) return s;
-    F = mf_fresnel_dielectric(c, eta);
-    refl = mf__u01(u3) < F;
-    if (refl) {
-        wi = mf_reflect(wo, m);
-        if (!(wi.z > MF_R(0.0))) return s;
-    } else {
-        mf_real x;
-        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return s;
-        x = mf_dot(wi, m) + c / eta;
-        if (!(x * x > MF_R(0.0))) return s;
-    }
-    /* pdf: D_wo(m) = c D(m) / A(wo), times F / (4 c) or (1 - F) |wi.m| / (wi.m + c / e)^2 */
-    lo = mf_lambda(d, wo);
-    li = mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
-    A = mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo);
-    dm = mf_D(d, m);
-    if (refl) p = F * dm / (MF_R(4.0) * A);
-    else {
-        mf_real x = mf_dot(wi, m) + c / eta;
-        p = (MF_R(1.0) - F) * c * dm / A * MF_FABS(mf_dot(wi, m)) / (x * x);
-    }
-    p = mf_min(p, MF_BIG);
-    if (!(p > MF_R(0.0))) return s;
-    /* f |wi.z| / pdf = A G2 / wo.z, G2 = 1 / (1 + lo + li) (the BSDF divides
-     * by wo.z, the visible normals by the projected area A) */
-    w = A / (wo.z * (MF_R(1.0) + lo + li));
-    if (!refl && mode != MF_IMPORTANCE) w /= eta * eta;
-    s.wi = mf_scale(wi, sg);
-    s.pdf = p;
-    s.weight = mf_min(w, MF_BIG);
-    s.lobe = refl ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
-    return s;
+    mf_vec3 m, wi, w = wo;
+    mf_real e = eta, F, c;
+    if (!mf__dielectric_ok(wo, eta)) return mf__no_sample();
+    if (w.z < MF_R(0.0)) { w = mf_scale(w, MF_R(-1.0)); e = MF_R(1.0) / e; }
+    m = mf_sample_visible(d, w, u1, u2);
+    c = mf_dot(w, m);
+    if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) return mf__no_sample();
+    F = mf_fresnel_dielectric(c, e);
+    if (mf__u01(u3) < F) {
+        wi = mf_reflect(w, m);
+        if (!(wi.z > MF_R(0.0))) return mf__no_sample();
+    } else if (!mf_refract(w, m, e, &wi) || !(wi.z < MF_R(0.0))) return mf__no_sample();
+    if (wo.z < MF_R(0.0)) wi = mf_scale(wi, MF_R(-1.0));
+    return mf__dielectric_record(d, wo, wi, eta, mode);
 }
 #ifndef MF_NO_LEADR
 /* ======================================================================== */

@@ -46,6 +46,11 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec
     z = (MF_R(1.0) - u2) * (MF_R(1.0) + b) - b;              /* cap of the visible hemisphere */
     s = MF_SQRT(mf_clamp(MF_R(1.0) - z * z, MF_R(0.0), MF_R(1.0)));
     h = mf_vec3_make(s * cp + v.x, s * sp + v.y, z + v.z);
+    /* h.v = c.v + 1 >= 0 exactly; near the cap point c = -v (u2 -> 1, the
+     * azimuth opposite v) h vanishes and what rounding leaves may face away
+     * from v: a normal of zero density there, so take (0, 0, 1) instead */
+    if (!(mf_dot(h, v) > MF_R(0.0)) || !(mf_dot(h, h) > MF_R(16.0) * MF_EPS * MF_EPS))
+        return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     h = mf_vec3_make(ax * h.x, ay * h.y, mf_max(h.z, MF_R(0.0)));
     if (!(mf_dot(h, h) > MF_R(1e-30))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
     return h;

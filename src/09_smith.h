@@ -97,12 +97,17 @@ MF_FORCE_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
  * integral <w.m> D(m) dm (thesis Eq. 3.9); finite and positive at w.z = 0.
  * For LEADR moments the mean surface is tilted: (w . (-E_x, -E_y, 1)) (1 +
  * Lambda(w)) (LEADR supplement Eq. 9). */
-MF_FORCE_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
+/* the same for a known lo = Lambda(w) (the samplers share it) */
+MF_FORCE_INLINE mf_real mf__projected_area_l(const mf_ndf *d, mf_vec3 w, mf_real lo)
 {
     mf_real cz;
-    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + mf_lambda(d, w)));
+    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + lo));
     cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
-    return mf__cap(cz + cz * mf_lambda(d, w));
+    return mf__cap(cz + cz * lo);
+}
+MF_FORCE_INLINE mf_real mf_projected_area(const mf_ndf *d, mf_vec3 w)
+{
+    return mf__projected_area_l(d, w, mf_lambda(d, w));
 }
 
 /* Distribution of visible normals (Heitz & d'Eon 2014 Eq. 2):

@@ -41,7 +41,10 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 
 /* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
  * inline, the other kinds out of line. Transformed kinds: the base's visible
- * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). */
+ * normals for M^-1 w, moved by M^-T (Eq. 4.20-4.21). u2 near 1 reaches the
+ * view's visibility horizon, where w.wm is 0 up to rounding: the lobe
+ * samplers (mf_brdf_sample ...) reject such normals, so their records never
+ * carry a zero pdf. */
 MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;

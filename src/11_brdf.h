@@ -41,25 +41,28 @@ MF_FORCE_INLINE mf_real mf_brdf_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 }
 
 /* Samples wi for wo through the visible normals of wo (Heitz & d'Eon 2014)
- * and returns the record: pdf = D_wo(wm) / (4 wo.wm) = D(wm) / (4 A(wo))
- * with A the projected area (Eq. 3.9; mf_brdf_pdf), weight f wi.z / pdf =
- * G2 / G1(wo) = (1 + Lambda(wo)) / (1 + Lambda(wo) + Lambda(wi)). D and the
- * two Lambdas are computed once for the three. No sample (MF_LOBE_NONE) when
- * wo.z <= 0, when the reflection falls below the horizon, or where rounding
- * puts the normal where D underflows (pdf 0). */
+ * and returns the record: pdf = D_wo(wh) / (4 wo.wh) (mf_brdf_pdf, at the
+ * half vector of (wo, wi) as mf_brdf_pdf computes it, so the two agree to
+ * the last bit), weight f wi.z / pdf = G2 / G1(wo) = (1 + Lambda(wo)) /
+ * (1 + Lambda(wo) + Lambda(wi)). D and the two Lambdas are computed once for
+ * the three. No sample (MF_LOBE_NONE) when wo.z <= 0, when the reflection
+ * falls below the horizon, or where rounding puts the normal where D
+ * underflows or wo.wh vanishes (pdf 0). */
 MF_FORCE_INLINE mf_sample mf_brdf_sample(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
     mf_sample s = mf__no_sample();
-    mf_vec3 wm, wi;
-    mf_real lo, li, pdf;
+    mf_vec3 wm, wi, wh;
+    mf_real lo, li, pdf, c;
     if (!(wo.z > MF_R(0.0))) return s;
     wm = mf_sample_visible(d, wo, u1, u2);
     wi = mf_reflect(wo, wm);
-    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(mf_dot(wo, wm) > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y))
-        return s;
+    if (!(wi.z > MF_R(0.0)) || !(wm.z > MF_R(0.0)) || !(wi.x == wi.x && wi.y == wi.y)) return s;
+    wh = mf_normalize(mf_add(wo, wi));
+    c = mf_dot(wo, wh);
+    if (!(c > MF_R(0.0))) return s;
     lo = mf_lambda(d, wo);
     li = mf_lambda(d, wi);
-    pdf = mf__cap(mf_D(d, wm) / (MF_R(4.0) * mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo)));
+    pdf = mf__cap(mf__cap(c * mf_D(d, wh) / mf__projected_area_l(d, wo, lo)) / (MF_R(4.0) * c));
     if (!(pdf > MF_R(0.0))) return s;
     s.wi = wi;
     s.pdf = pdf;
@@ -105,6 +108,8 @@ MF_FORCE_INLINE mf_sample mf_brdf_sample_bounded(const mf_ndf *d, mf_vec3 wo, mf
     h = mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
     wi = mf_reflect(wo, h);
     if (!(wi.z > MF_R(0.0)) || !(mf_dot(wo, h) > MF_R(0.0))) return s;
+    h = mf_normalize(mf_add(wo, wi));   /* as mf_brdf_pdf_bounded: the two agree exactly */
+    if (!(mf_dot(wo, h) > MF_R(0.0))) return s;
     den = mf__ggx_bounded_den(d, wo);
     pdf = mf_min(mf_ggx_D(d->ax, d->ay, h) / den, MF_BIG);
     if (!(pdf > MF_R(0.0))) return s;

@@ -130,54 +130,60 @@ MF_FORCE_INLINE mf_real mf_dielectric_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 w
     return mf_min((MF_R(1.0) - F) * dv * MF_FABS(mf_dot(wi, h)) / den, MF_BIG);   /* Jacobian |wi.h| / (wi.h + wo.h / e)^2 */
 }
 
+/* The record of a sampled wi: pdf and f as mf_dielectric_pdf and
+ * mf_dielectric_bsdf compute them (the same half vector, so the record and
+ * the functions agree), with D and the two Lambdas computed once. */
+MF_FORCE_INLINE mf_sample mf__dielectric_record(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
+{
+    mf_sample s = mf__no_sample();
+    mf_vec3 h, wo0 = wo, wi0 = wi;
+    mf_real F, oh, den, dm, lo, li, A, dv, p, f;
+    if (!mf__dielectric_prep(&wo, &wi, &eta, &h, &oh, &F, &den)) return s;
+    dm = mf_D(d, h);
+    lo = mf_lambda(d, wo);
+    li = mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
+    A = mf__projected_area_l(d, wo, lo);
+    dv = mf__cap(oh * dm / A);                                 /* mf_D_visible(d, wo, h) */
+    f = dm / ((MF_R(1.0) + lo + li) * wo.z);                   /* D G2 / wo.z */
+    if (wi.z > MF_R(0.0)) {
+        p = mf_min(F * dv / (MF_R(4.0) * oh), MF_BIG);
+        f = mf_min(F * f / (MF_R(4.0) * wi.z), MF_BIG);
+    } else {
+        p = mf_min((MF_R(1.0) - F) * dv * MF_FABS(mf_dot(wi, h)) / den, MF_BIG);
+        f = (MF_R(1.0) - F) * f * MF_FABS(mf_dot(wi, h)) * oh / (den * -wi.z);
+        f = mf_min(mode == MF_IMPORTANCE ? f : f / (eta * eta), MF_BIG);
+    }
+    if (!(p > MF_R(0.0))) return s;
+    s.wi = wi0;
+    s.pdf = p;
+    s.weight = mf_min(f * MF_FABS(wi.z) / p, MF_BIG);
+    s.lobe = wo0.z * wi0.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
+}
+
 /* Samples wi (reflected or transmitted) for wo on either side from three
  * uniform numbers (u1, u2 the visible normal of wo's side, u3 the choice
  * between reflection, with probability F(wo.m), and refraction) and returns
  * the record: pdf as mf_dielectric_pdf, weight f |wi.z| / pdf = G2 / G1(wo)
  * = (1 + Lambda(wo)) G2 (LEADR's tilted mean surface: A(wo) G2 / wo.z),
- * divided by e^2 when transmitted in radiance transport. */
+ * divided by e^2 when transmitted in radiance transport. No sample where
+ * rounding leaves wi without density (a grazing refraction whose half
+ * vector no longer faces both directions). */
 MF_FORCE_INLINE mf_sample mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
                                                mf_real u1, mf_real u2, mf_real u3)
 {
-    mf_sample s = mf__no_sample();
-    mf_vec3 m, wi;
-    mf_real sg = MF_R(1.0), F, c, lo, li, A, p, dm, w;
-    int refl;
-    if (!mf__dielectric_ok(wo, eta)) return s;
-    if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; sg = MF_R(-1.0); }
-    m = mf_sample_visible(d, wo, u1, u2);
-    c = mf_dot(wo, m);
-    if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) return s;
-    F = mf_fresnel_dielectric(c, eta);
-    refl = mf__u01(u3) < F;
-    if (refl) {
-        wi = mf_reflect(wo, m);
-        if (!(wi.z > MF_R(0.0))) return s;
-    } else {
-        mf_real x;
-        if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) return s;
-        x = mf_dot(wi, m) + c / eta;
-        if (!(x * x > MF_R(0.0))) return s;
-    }
-    /* pdf: D_wo(m) = c D(m) / A(wo), times F / (4 c) or (1 - F) |wi.m| / (wi.m + c / e)^2 */
-    lo = mf_lambda(d, wo);
-    li = mf_lambda(d, wi.z < MF_R(0.0) ? mf_scale(wi, MF_R(-1.0)) : wi);
-    A = mf_max(mf__mean_surface_proj(d, wo), MF_R(1e-15)) * (MF_R(1.0) + lo);
-    dm = mf_D(d, m);
-    if (refl) p = F * dm / (MF_R(4.0) * A);
-    else {
-        mf_real x = mf_dot(wi, m) + c / eta;
-        p = (MF_R(1.0) - F) * c * dm / A * MF_FABS(mf_dot(wi, m)) / (x * x);
-    }
-    p = mf_min(p, MF_BIG);
-    if (!(p > MF_R(0.0))) return s;
-    /* f |wi.z| / pdf = A G2 / wo.z, G2 = 1 / (1 + lo + li) (the BSDF divides
-     * by wo.z, the visible normals by the projected area A) */
-    w = A / (wo.z * (MF_R(1.0) + lo + li));
-    if (!refl && mode != MF_IMPORTANCE) w /= eta * eta;
-    s.wi = mf_scale(wi, sg);
-    s.pdf = p;
-    s.weight = mf_min(w, MF_BIG);
-    s.lobe = refl ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
-    return s;
+    mf_vec3 m, wi, w = wo;
+    mf_real e = eta, F, c;
+    if (!mf__dielectric_ok(wo, eta)) return mf__no_sample();
+    if (w.z < MF_R(0.0)) { w = mf_scale(w, MF_R(-1.0)); e = MF_R(1.0) / e; }
+    m = mf_sample_visible(d, w, u1, u2);
+    c = mf_dot(w, m);
+    if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) return mf__no_sample();
+    F = mf_fresnel_dielectric(c, e);
+    if (mf__u01(u3) < F) {
+        wi = mf_reflect(w, m);
+        if (!(wi.z > MF_R(0.0))) return mf__no_sample();
+    } else if (!mf_refract(w, m, e, &wi) || !(wi.z < MF_R(0.0))) return mf__no_sample();
+    if (wo.z < MF_R(0.0)) wi = mf_scale(wi, MF_R(-1.0));
+    return mf__dielectric_record(d, wo, wi, eta, mode);
 }

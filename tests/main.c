@@ -190,6 +190,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_dielectric);
     MFT_RUN(test_energy);
     MFT_RUN(test_robust);
+    MFT_RUN(test_samplers);
     MFT_RUN(test_fuzzfound);
     MFT_RUN(test_float);
     MFT_RUN(test_tu2);

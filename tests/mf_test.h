@@ -83,6 +83,7 @@ void test_ndf(void);
 void test_sampling(void);
 void test_brdf(void);
 void test_robust(void);
+void test_samplers(void);
 void test_float(void);
 void test_tu2(void);
 void test_ltmd(void);
