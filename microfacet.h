@@ -8,7 +8,7 @@
  *   16_microsurface.h 17_energy_table.h 18_energy.h 97_deprecated.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
- * Version 0.3.0.  MIT licensed (see the end of this file).
+ * Version 0.4.0.  MIT licensed (see the end of this file).
  *
  * QUICK START
  *
@@ -234,7 +234,7 @@
 #define MICROFACET_H
 
 #define MF_VERSION_MAJOR 0
-#define MF_VERSION_MINOR 3
+#define MF_VERSION_MINOR 4
 #define MF_VERSION_PATCH 0
 
 /* ======================================================================== */
@@ -2567,16 +2567,16 @@ MF_INLINE mf_vec3 mf_leadr_mean_normal(mf_leadr a)
     return n.z > MF_R(0.0) ? n : mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
 }
 /* forward declaration: defined below */
-MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy);
+MF_INLINE mf_result mf_leadr_to_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy);
 
 /* The non-centered anisotropic Beckmann distribution of the moments (Eq. 8,
  * 10) as an mf_ndf: every generic operation works (D, Lambda of Eq. 13-15
  * exact, G1, G2, D_visible, both samplers exact, the BRDF of Eq. 16-17). The
- * covariance goes through mf_leadr_covariance's guard. */
+ * covariance goes through mf_leadr_to_covariance's guard. */
 MF_INLINE mf_ndf mf_leadr_ndf(mf_leadr a)
 {
     mf_real vx, vy, c;
-    mf_leadr_covariance(a, &vx, &vy, &c);
+    mf_leadr_to_covariance(a, &vx, &vy, &c);
     return mf__leadr_ndf_make(a.E_x == a.E_x && MF_FABS(a.E_x) < MF_BIG ? a.E_x : MF_R(0.0),
                               a.E_y == a.E_y && MF_FABS(a.E_y) < MF_BIG ? a.E_y : MF_R(0.0), vx, vy, c);
 }
@@ -2748,13 +2748,14 @@ MF_INLINE mf_real mf_leadr_diffuse_sh9(mf_leadr a, mf_vec3 wo, const mf_real sh[
  * [MF_LEADR_MIN_VARIANCE, MF_LEADR_MAX_VARIANCE] and |correlation| at most
  * MF_LEADR_MAX_CORRELATION (filtering and float round-off can break the
  * first and last; the upper bound, alpha = sqrt(2 var) = MF_ALPHA_MAX, keeps
- * the determinant and D finite in float). Returns 1 if the moments were valid
- * as given, 0 if the guard changed them (non-finite moments give an isotropic
- * variance of MF_LEADR_MIN_VARIANCE). */
+ * the determinant and D finite in float). The outputs are always written;
+ * returns MF_SUCCESS if the moments were valid as given,
+ * MF_ERROR_INVALID_DATA if the guard changed them (non-finite moments give an
+ * isotropic variance of MF_LEADR_MIN_VARIANCE). */
 #define MF_LEADR_MIN_VARIANCE MF_R(1e-8)
 #define MF_LEADR_MAX_VARIANCE MF_R(5e7)
 #define MF_LEADR_MAX_CORRELATION MF_R(0.999)
-MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
+MF_INLINE mf_result mf_leadr_to_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
 {
     mf_real sx = a.E_xx - a.E_x * a.E_x, sy = a.E_yy - a.E_y * a.E_y, c = a.E_xy - a.E_x * a.E_y, lim;
     int ok = 1;
@@ -2768,7 +2769,7 @@ MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf
     if (var_x) *var_x = sx;
     if (var_y) *var_y = sy;
     if (cov_xy) *cov_xy = c;
-    return ok;
+    return ok ? MF_SUCCESS : MF_ERROR_INVALID_DATA;
 }
 
 /* A mip pyramid of moments over a periodic (tiling) texture. Level 0 holds
@@ -3413,9 +3414,9 @@ typedef struct mf_ltc_fit_result {
 MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx,
                            mf_real cos_theta_o, const mf_real *guess);
 
-/* A table of fits over view angle and roughness for a distribution family:
- * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
- * n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
+/* A table of fits over view angle and roughness for a family of
+ * distributions: family(alpha, family_ctx) returns the family's mf_ndf at
+ * roughness alpha (any kind, e.g. mf_gtr(alpha, 1.5)), n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
  * sqrt(alpha) (alpha clamped below at MF_LTC_ALPHA_MIN). data holds, per
  * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel
  * with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (middle entry 1: blending
@@ -3424,8 +3425,9 @@ MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_
 #define MF_LTC_ALPHA_MIN MF_R(1e-3)
 typedef struct mf_ltc_table { int n_theta, n_alpha; float *data; } mf_ltc_table;
 typedef void (*mf_progress_fn)(int done, int total, void *ctx);
-MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
-                                   mf_progress_fn progress, void *ctx);
+typedef mf_ndf (*mf_ndf_family_fn)(mf_real alpha, void *ctx);
+MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, mf_ndf_family_fn family, void *family_ctx, int n_theta, int n_alpha,
+                                   mf_progress_fn progress, void *progress_ctx);
 MFDEF void mf_ltc_table_release(mf_ltc_table *t);
 /* Bilinear lookup of the four M^-1 entries (and of the albedo and Fresnel
  * columns when asked for); M follows in closed form. */
@@ -4645,6 +4647,11 @@ MF_DEPRECATED("use mf_basis_from_normal") MF_INLINE void mf_frame(mf_vec3 n, mf_
 MF_DEPRECATED("use mf_transform_is_valid") MF_INLINE int mf_transform_valid(mf_mat2 M)
 {
     return mf_transform_is_valid(M);
+}
+/* 0.3: 1 when the moments were valid as given */
+MF_DEPRECATED("use mf_leadr_to_covariance (mf_result)") MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
+{
+    return mf_leadr_to_covariance(a, var_x, var_y, cov_xy) == MF_SUCCESS;
 }
 #ifndef MF_NO_IBM
 MF_DEPRECATED("use mf_ibm_brdf_and_pdf") MF_INLINE mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
@@ -8364,16 +8371,6 @@ MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_
     return MF_SUCCESS;
 }
 
-static mf_ndf mf__family(int kind, mf_real alpha, mf_real gamma)
-{
-    switch (kind) {
-    case MF_NDF_BECKMANN: return mf_beckmann(alpha, alpha);
-    case MF_NDF_GTR: return mf_gtr(alpha, gamma);
-    case MF_NDF_STUDENT_T: return mf_student_t(alpha, alpha, gamma);
-    default: return mf_ggx(alpha, alpha);
-    }
-}
-
 /* grid: t = sqrt(1 - cos theta) in [0, 1], v = sqrt(alpha) in [0, 1] */
 static mf_real mf__ltc_grid_cos(int i, int n)
 {
@@ -8386,14 +8383,14 @@ static mf_real mf__ltc_grid_alpha(int j, int n)
     return mf_max(v * v, MF_LTC_ALPHA_MIN);
 }
 
-MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
-                                   mf_progress_fn progress, void *ctx)
+MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, mf_ndf_family_fn family, void *family_ctx, int n_theta, int n_alpha,
+                                   mf_progress_fn progress, void *progress_ctx)
 {
     int i, j, done = 0;
     mf_real prev0[3], prev[3];
     if (!t) return MF_ERROR_INVALID_ARGUMENT;
     t->data = 0; t->n_theta = t->n_alpha = 0;
-    if (n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096 || kind < 0 || kind > MF_NDF_STUDENT_T)
+    if (!family || n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096)
         return MF_ERROR_INVALID_ARGUMENT;
     t->data = (float *)MF_MALLOC(sizeof(float) * 6 * (size_t)n_theta * (size_t)n_alpha);
     if (!t->data) return MF_ERROR_OUT_OF_MEMORY;
@@ -8401,7 +8398,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
     /* roughest first, each view angle warm-started from its neighbour */
     prev0[0] = prev0[1] = MF_R(1.0); prev0[2] = MF_R(0.0);
     for (j = n_alpha - 1; j >= 0; --j) {
-        mf_ndf d = mf__family(kind, mf__ltc_grid_alpha(j, n_alpha), gamma);
+        mf_ndf d = family(mf__ltc_grid_alpha(j, n_alpha), family_ctx);
         prev[0] = prev0[0]; prev[1] = prev0[1]; prev[2] = prev0[2];
         for (i = 0; i < n_theta; ++i) {
             mf_ltc_fit_result r;
@@ -8412,7 +8409,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
             e[4] = (float)r.albedo; e[5] = (float)r.fresnel;
             prev[0] = r.params[0]; prev[1] = r.params[1]; prev[2] = r.params[2];
             if (i == 0) { prev0[0] = r.params[0]; prev0[1] = r.params[1]; prev0[2] = r.params[2]; }
-            if (progress) progress(++done, n_theta * n_alpha, ctx);
+            if (progress) progress(++done, n_theta * n_alpha, progress_ctx);
         }
     }
     return MF_SUCCESS;

@@ -1,5 +1,5 @@
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
- * Version 0.3.0.  MIT licensed (see the end of this file).
+ * Version 0.4.0.  MIT licensed (see the end of this file).
  *
  * QUICK START
  *

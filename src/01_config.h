@@ -1,6 +1,6 @@
 /* @decl */
 #define MF_VERSION_MAJOR 0
-#define MF_VERSION_MINOR 3
+#define MF_VERSION_MINOR 4
 #define MF_VERSION_PATCH 0
 
 /* ======================================================================== */

@@ -78,16 +78,16 @@ MF_INLINE mf_vec3 mf_leadr_mean_normal(mf_leadr a)
     return n.z > MF_R(0.0) ? n : mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
 }
 /* forward declaration: defined below */
-MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy);
+MF_INLINE mf_result mf_leadr_to_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy);
 
 /* The non-centered anisotropic Beckmann distribution of the moments (Eq. 8,
  * 10) as an mf_ndf: every generic operation works (D, Lambda of Eq. 13-15
  * exact, G1, G2, D_visible, both samplers exact, the BRDF of Eq. 16-17). The
- * covariance goes through mf_leadr_covariance's guard. */
+ * covariance goes through mf_leadr_to_covariance's guard. */
 MF_INLINE mf_ndf mf_leadr_ndf(mf_leadr a)
 {
     mf_real vx, vy, c;
-    mf_leadr_covariance(a, &vx, &vy, &c);
+    mf_leadr_to_covariance(a, &vx, &vy, &c);
     return mf__leadr_ndf_make(a.E_x == a.E_x && MF_FABS(a.E_x) < MF_BIG ? a.E_x : MF_R(0.0),
                               a.E_y == a.E_y && MF_FABS(a.E_y) < MF_BIG ? a.E_y : MF_R(0.0), vx, vy, c);
 }
@@ -259,13 +259,14 @@ MF_INLINE mf_real mf_leadr_diffuse_sh9(mf_leadr a, mf_vec3 wo, const mf_real sh[
  * [MF_LEADR_MIN_VARIANCE, MF_LEADR_MAX_VARIANCE] and |correlation| at most
  * MF_LEADR_MAX_CORRELATION (filtering and float round-off can break the
  * first and last; the upper bound, alpha = sqrt(2 var) = MF_ALPHA_MAX, keeps
- * the determinant and D finite in float). Returns 1 if the moments were valid
- * as given, 0 if the guard changed them (non-finite moments give an isotropic
- * variance of MF_LEADR_MIN_VARIANCE). */
+ * the determinant and D finite in float). The outputs are always written;
+ * returns MF_SUCCESS if the moments were valid as given,
+ * MF_ERROR_INVALID_DATA if the guard changed them (non-finite moments give an
+ * isotropic variance of MF_LEADR_MIN_VARIANCE). */
 #define MF_LEADR_MIN_VARIANCE MF_R(1e-8)
 #define MF_LEADR_MAX_VARIANCE MF_R(5e7)
 #define MF_LEADR_MAX_CORRELATION MF_R(0.999)
-MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
+MF_INLINE mf_result mf_leadr_to_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
 {
     mf_real sx = a.E_xx - a.E_x * a.E_x, sy = a.E_yy - a.E_y * a.E_y, c = a.E_xy - a.E_x * a.E_y, lim;
     int ok = 1;
@@ -279,7 +280,7 @@ MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf
     if (var_x) *var_x = sx;
     if (var_y) *var_y = sy;
     if (cov_xy) *cov_xy = c;
-    return ok;
+    return ok ? MF_SUCCESS : MF_ERROR_INVALID_DATA;
 }
 
 /* A mip pyramid of moments over a periodic (tiling) texture. Level 0 holds

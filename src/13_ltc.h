@@ -570,9 +570,9 @@ typedef struct mf_ltc_fit_result {
 MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx,
                            mf_real cos_theta_o, const mf_real *guess);
 
-/* A table of fits over view angle and roughness for a distribution family:
- * kind (mf_ndf_type) with tail gamma (GTR, Student-t; ignored otherwise),
- * n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
+/* A table of fits over view angle and roughness for a family of
+ * distributions: family(alpha, family_ctx) returns the family's mf_ndf at
+ * roughness alpha (any kind, e.g. mf_gtr(alpha, 1.5)), n_theta points in t = sqrt(1 - cos theta_o) and n_alpha points in
  * sqrt(alpha) (alpha clamped below at MF_LTC_ALPHA_MIN). data holds, per
  * entry [alpha][theta], the six floats inv0 inv1 inv2 inv3 albedo fresnel
  * with M^-1 = [inv0 0 inv1; 0 1 0; inv2 0 inv3] (middle entry 1: blending
@@ -581,8 +581,9 @@ MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_
 #define MF_LTC_ALPHA_MIN MF_R(1e-3)
 typedef struct mf_ltc_table { int n_theta, n_alpha; float *data; } mf_ltc_table;
 typedef void (*mf_progress_fn)(int done, int total, void *ctx);
-MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
-                                   mf_progress_fn progress, void *ctx);
+typedef mf_ndf (*mf_ndf_family_fn)(mf_real alpha, void *ctx);
+MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, mf_ndf_family_fn family, void *family_ctx, int n_theta, int n_alpha,
+                                   mf_progress_fn progress, void *progress_ctx);
 MFDEF void mf_ltc_table_release(mf_ltc_table *t);
 /* Bilinear lookup of the four M^-1 entries (and of the albedo and Fresnel
  * columns when asked for); M follows in closed form. */
@@ -838,16 +839,6 @@ MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_
     return MF_SUCCESS;
 }
 
-static mf_ndf mf__family(int kind, mf_real alpha, mf_real gamma)
-{
-    switch (kind) {
-    case MF_NDF_BECKMANN: return mf_beckmann(alpha, alpha);
-    case MF_NDF_GTR: return mf_gtr(alpha, gamma);
-    case MF_NDF_STUDENT_T: return mf_student_t(alpha, alpha, gamma);
-    default: return mf_ggx(alpha, alpha);
-    }
-}
-
 /* grid: t = sqrt(1 - cos theta) in [0, 1], v = sqrt(alpha) in [0, 1] */
 static mf_real mf__ltc_grid_cos(int i, int n)
 {
@@ -860,14 +851,14 @@ static mf_real mf__ltc_grid_alpha(int j, int n)
     return mf_max(v * v, MF_LTC_ALPHA_MIN);
 }
 
-MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int n_theta, int n_alpha,
-                                   mf_progress_fn progress, void *ctx)
+MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, mf_ndf_family_fn family, void *family_ctx, int n_theta, int n_alpha,
+                                   mf_progress_fn progress, void *progress_ctx)
 {
     int i, j, done = 0;
     mf_real prev0[3], prev[3];
     if (!t) return MF_ERROR_INVALID_ARGUMENT;
     t->data = 0; t->n_theta = t->n_alpha = 0;
-    if (n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096 || kind < 0 || kind > MF_NDF_STUDENT_T)
+    if (!family || n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096)
         return MF_ERROR_INVALID_ARGUMENT;
     t->data = (float *)MF_MALLOC(sizeof(float) * 6 * (size_t)n_theta * (size_t)n_alpha);
     if (!t->data) return MF_ERROR_OUT_OF_MEMORY;
@@ -875,7 +866,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
     /* roughest first, each view angle warm-started from its neighbour */
     prev0[0] = prev0[1] = MF_R(1.0); prev0[2] = MF_R(0.0);
     for (j = n_alpha - 1; j >= 0; --j) {
-        mf_ndf d = mf__family(kind, mf__ltc_grid_alpha(j, n_alpha), gamma);
+        mf_ndf d = family(mf__ltc_grid_alpha(j, n_alpha), family_ctx);
         prev[0] = prev0[0]; prev[1] = prev0[1]; prev[2] = prev0[2];
         for (i = 0; i < n_theta; ++i) {
             mf_ltc_fit_result r;
@@ -886,7 +877,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
             e[4] = (float)r.albedo; e[5] = (float)r.fresnel;
             prev[0] = r.params[0]; prev[1] = r.params[1]; prev[2] = r.params[2];
             if (i == 0) { prev0[0] = r.params[0]; prev0[1] = r.params[1]; prev0[2] = r.params[2]; }
-            if (progress) progress(++done, n_theta * n_alpha, ctx);
+            if (progress) progress(++done, n_theta * n_alpha, progress_ctx);
         }
     }
     return MF_SUCCESS;

@@ -143,6 +143,10 @@ static inline size_t mft_ibm_bytes(const mf_ibm *ibm)
 }
 #endif
 
+/* Families of distributions over alpha for mf_ltc_table_build */
+static inline mf_ndf mft_family_ggx(mf_real a, void *c) { (void)c; return mf_ggx(a, a); }
+static inline mf_ndf mft_family_beckmann(mf_real a, void *c) { (void)c; return mf_beckmann(a, a); }
+
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;
 mf_ndf mft_make(const mft_case *c);

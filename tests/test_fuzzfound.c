@@ -379,7 +379,7 @@ static mf_result b_ltc_fit(void *c)
 static mf_result b_ltc_table(void *c)
 {
     mf_ltc_table t;
-    mf_result r = mf_ltc_table_build(&t, MF_NDF_GGX, 0, 2, 2, NULL, NULL);
+    mf_result r = mf_ltc_table_build(&t, mft_family_ggx, NULL, 2, 2, NULL, NULL);
     (void)c;
     if (!r) mf_ltc_table_release(&t);
     return r;

@@ -48,20 +48,20 @@ static void test_moments(void)
         mf_leadr a = mf_leadr_from_slope(MF_R(0.3), MF_R(-0.2)), b = mf_leadr_with_roughness(a, MF_R(0.4), MF_R(0.1));
         mf_real vx, vy, c;
         mf_vec3 n = mf_leadr_mean_normal(a);
-        int ok = mf_leadr_covariance(b, &vx, &vy, &c);
+        int ok = mf_leadr_to_covariance(b, &vx, &vy, &c) == MF_SUCCESS;
         MFT_NEAR(vx, 0.08, tol, tol, "roughness adds alpha_x^2 / 2");
         MFT_NEAR(vy, 0.005, tol, tol, "roughness adds alpha_y^2 / 2");
         MFT_CHECK(ok == 1 && fabs((double)c) < 1e-6, "valid covariance passes the guard");
         MFT_NEAR(n.x, -0.3 / sqrt(1.13), tol, tol, "mean normal (Eq. 11) x");
         MFT_NEAR(n.z, 1.0 / sqrt(1.13), tol, tol, "mean normal (Eq. 11) z");
-        ok = mf_leadr_covariance(a, &vx, &vy, &c);   /* a single slope: zero variance */
+        ok = mf_leadr_to_covariance(a, &vx, &vy, &c) == MF_SUCCESS;   /* a single slope: zero variance */
         MFT_CHECK(ok == 0 && vx >= MF_LEADR_MIN_VARIANCE && vy >= MF_LEADR_MIN_VARIANCE && fabs((double)c) <= sqrt((double)vx * vy),
                   "degenerate covariance guarded");
         b.E_xy = 10;
-        ok = mf_leadr_covariance(b, &vx, &vy, &c);
+        ok = mf_leadr_to_covariance(b, &vx, &vy, &c) == MF_SUCCESS;
         MFT_CHECK(ok == 0 && fabs((double)c) <= 0.9991 * sqrt((double)vx * vy), "correlation clamped below 1");
         b.E_xx = (mf_real)(HUGE_VAL - HUGE_VAL);
-        ok = mf_leadr_covariance(b, &vx, &vy, &c);
+        ok = mf_leadr_to_covariance(b, &vx, &vy, &c) == MF_SUCCESS;
         MFT_CHECK(ok == 0 && vx == MF_LEADR_MIN_VARIANCE, "NaN moments guarded");
     }
 }

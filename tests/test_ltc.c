@@ -236,7 +236,7 @@ static int refit_compare(int kind, const float *s, const char *name, double *wm,
     mf_ltc_table t;
     int i, j, k;
     *wm = *wa = 0.0;
-    if (mf_ltc_table_build(&t, kind, MF_R(2.0), 4, 4, NULL, NULL) != MF_SUCCESS) return 0;
+    if (mf_ltc_table_build(&t, kind == MF_NDF_BECKMANN ? mft_family_beckmann : mft_family_ggx, NULL, 4, 4, NULL, NULL) != MF_SUCCESS) return 0;
     for (j = 0; j < 4; ++j)
         for (i = 0; i < 4; ++i) {
             const float *a = t.data + 6 * (j * 4 + i), *b = s + 6 * (21 * j * 64 + 21 * i);
@@ -350,9 +350,9 @@ static void test_fitter(void)
     /* bad input, and a small Beckmann table */
     MFT_CHECK(mf_ltc_fit(&r, NULL, NULL, NULL, MF_R(0.5), NULL) == MF_ERROR_INVALID_ARGUMENT, "fit without a BRDF rejected");
     MFT_CHECK(mf_ltc_fit(&r, &d, NULL, NULL, MF_R(0.0), NULL) == MF_ERROR_INVALID_ARGUMENT, "fit at cos 0 rejected");
-    MFT_CHECK(mf_ltc_table_build(&t, MF_NDF_BECKMANN, 0, 1, 4, NULL, NULL) == MF_ERROR_INVALID_ARGUMENT && t.data == NULL,
+    MFT_CHECK(mf_ltc_table_build(&t, mft_family_beckmann, NULL, 1, 4, NULL, NULL) == MF_ERROR_INVALID_ARGUMENT && t.data == NULL,
               "table of 1 column rejected, nothing allocated");
-    MFT_CHECK(mf_ltc_table_build(&t, MF_NDF_BECKMANN, 0, 4, 4, NULL, NULL) == MF_SUCCESS, "Beckmann 4 x 4 table");
+    MFT_CHECK(mf_ltc_table_build(&t, mft_family_beckmann, NULL, 4, 4, NULL, NULL) == MF_SUCCESS, "Beckmann 4 x 4 table");
     {
         mf_real alb;
         mf_ltc l = mf_ltc_table_lookup(&t, MF_R(0.8), MF_R(0.3), &alb, NULL);
@@ -1072,7 +1072,7 @@ static void test_ggx_refined(void)
     double e_fit[2] = { 0, 0 }, e_ship[2] = { 0, 0 };
     int i, j, k, cnt[2] = { 0, 0 };
     char msg[220];
-    if (mf_ltc_table_build(&t, MF_NDF_GGX, MF_R(2.0), 4, 4, NULL, NULL) != MF_SUCCESS) { MFT_CHECK(0, "refit 4 x 4 GGX table"); return; }
+    if (mf_ltc_table_build(&t, mft_family_ggx, NULL, 4, 4, NULL, NULL) != MF_SUCCESS) { MFT_CHECK(0, "refit 4 x 4 GGX table"); return; }
     broad_state = 0x2545f4914f6cdd1dULL;
     for (j = 0; j < 4; ++j)
         for (i = 0; i < 4; ++i) {

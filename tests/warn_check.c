@@ -11,6 +11,7 @@
 static void mft_map(mf_real u, mf_real v, mf_real out[2], void *ctx) { (void)ctx; out[0] = u + v; out[1] = u - v; }
 static mf_vec3 mft_env(mf_vec3 wi, mf_real sa, void *ctx) { (void)ctx; (void)sa; return wi; }
 static mf_real mft_brdf_cos(mf_vec3 wo, mf_vec3 wi, void *ctx) { (void)ctx; return wo.z * wi.z; }
+static mf_ndf mft_family(mf_real a, void *ctx) { (void)ctx; return mf_gtr(a, MF_R(1.5)); }
 #endif
 
 #ifdef MFT_SECOND_TU
@@ -124,7 +125,7 @@ int main(void)
         la = mf_leadr_lerp(mf_leadr_height_scale(mf_leadr_deform(la, mf_mat2_make(1, 0, 0, 1)), MF_R(0.5)), la, MF_R(0.5));
         la = mf_leadr_scale(la, MF_R(1.0));
         ld = mf_leadr_ndf(la);
-        s += mf_leadr_specular(la, wo, wi) + mf_D(&ld, wo) + mf_leadr_mean_normal(la).z + (mf_real)mf_leadr_covariance(la, &vx, &vy, &cxy);
+        s += mf_leadr_specular(la, wo, wi) + mf_D(&ld, wo) + mf_leadr_mean_normal(la).z + (mf_real)mf_leadr_to_covariance(la, &vx, &vy, &cxy);
         s += mf_leadr_map_lookup((const mf_leadr_map *)0, MF_R(0.5), MF_R(0.5), MF_R(0.1)).E_x;
     }
     { /* tabulated distributions */
@@ -219,7 +220,7 @@ int main(void)
         mf_ltc_table tb;
         int nt = 0, na = 0;
         if (mf_ltc_fit(&r, (const mf_ndf *)0, mft_brdf_cos, (void *)0, MF_R(0.7), (const mf_real *)0) == MF_SUCCESS) s += r.albedo;
-        if (mf_ltc_table_build(&tb, MF_NDF_GGX, MF_R(2.0), 2, 2, (mf_progress_fn)0, (void *)0) == MF_SUCCESS) {
+        if (mf_ltc_table_build(&tb, mft_family, (void *)0, 2, 2, (mf_progress_fn)0, (void *)0) == MF_SUCCESS) {
             s += mf_ltc_table_lookup(&tb, MF_R(0.5), MF_R(0.3), (mf_real *)0, (mf_real *)0).M[0];
             mf_ltc_table_release(&tb);
         }
@@ -246,6 +247,7 @@ int main(void)
         s += mf_brdf_sample_weight(d, wo, wi) + mf_ggx_brdf_pdf_bounded(d, wo, wi);
         s += mf_ggx_sample_visible_bounded(d, wo, MF_R(0.3), MF_R(0.6)).z + mf_dielectric_sample_weight(d, wo, wi, MF_R(1.5));
         s += (mf_real)mf_transform_valid(mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0)));
+        s += (mf_real)mf_leadr_covariance(mf_leadr_from_slope(MF_R(0.1), MF_R(0.2)), &t.x, &t.y, &t.z);
         mf_frame(wo, &t, &b);
         mf_microsurface_options_default(&mo);
         mf_gonio_config_default(&gc);
