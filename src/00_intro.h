@@ -7,13 +7,15 @@
  *     // in exactly one C or C++ file, before the include:
  *     #define MICROFACET_IMPLEMENTATION
  *
- *     mf_ndf  d   = mf_ggx(0.3f, 0.1f);                    // anisotropic GGX
- *     mf_vec3 wo  = mf_vec3_make(0.3f, 0.2f, 0.93f);       // unit, local frame
- *     mf_vec3 wi  = mf_brdf_sample(&d, wo, u1, u2);        // wi.z <= 0: no sample
- *     mf_real f   = mf_brdf(&d, wo, wi);                   // D G2 / (4 |wo.z| |wi.z|)
- *     mf_real pdf = mf_brdf_pdf(&d, wo, wi);               // per solid angle of wi
- *     // or directly the sample weight f * wi.z / pdf = G2 / G1(wo):
- *     mf_real w   = mf_brdf_sample_weight(&d, wo, wi);
+ *     mf_ndf    d  = mf_ggx(0.3f, 0.1f);                    // anisotropic GGX
+ *     mf_vec3   wo = mf_vec3_make(0.3f, 0.2f, 0.93f);       // unit, local frame
+ *     mf_sample s  = mf_brdf_sample(&d, wo, u1, u2);       // u in [0, 1]
+ *     if (s.lobe != MF_LOBE_NONE) {                        // else: no sample
+ *         // s.wi, s.pdf (per solid angle), s.weight = f cos / pdf = G2 / G1(wo)
+ *         mf_real f = mf_brdf(&d, wo, s.wi);               // D G2 / (4 |wo.z| |wi.z|)
+ *     }
+ *     // every sampler returns this record: mf_brdf_sample_bounded,
+ *     // mf_dielectric_sample (with an mf_transport), mf_brdf_ms_sample, ...
  *
  * TABLE OF CONTENTS  (modules in dependency order; search for "== n.")
  *
@@ -93,9 +95,11 @@
  *     to 1e30). D, D_visible, the projected area, mf_brdf and mf_brdf_pdf are
  *     capped at MF_BIG (1e30 in float): grazing retro-reflection and
  *     transforms with tiny entries reach it. Random numbers outside [0, 1]
- *     are clamped to it (NaN: 0). mf_brdf_sample returns a direction only
+ *     are clamped to it (NaN: 0), 1 read as MF_U_MAX, the largest mf_real
+ *     below 1. A sample record never carries a zero pdf:
+ *     mf_brdf_sample returns a direction only
  *     where mf_brdf_pdf is positive.
- *   - Transforms: mf_transform_valid also requires |det M| > 1/MF_BIG, so
+ *   - Transforms: mf_transform_is_valid also requires |det M| > 1/MF_BIG, so
  *     that M^-1 is finite in mf_real.
  *   - LEADR moments: variances are clamped to [1e-8, 5e7] (alpha up to
  *     MF_ALPHA_MAX); map builders reject normals with z < 1e-4.
