@@ -1438,7 +1438,7 @@ MF_FORCE_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 /* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3), before the
  * final normalization; w need not be unit. (0,0,1) for degenerate input. k
  * scales the cap's lower bound -k v.z: 1 is the whole visible hemisphere, k < 1
- * the bounded cap of Eto & Tokuyoshi 2023 (mf_ggx_sample_visible_bounded). */
+ * the bounded cap of Eto & Tokuyoshi 2023 (mf_brdf_sample_bounded). */
 MF_FORCE_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
 {
     mf_vec3 v, h;
@@ -1821,7 +1821,7 @@ MF_INLINE int mf_transform_is_valid(mf_mat2 M)
 /* The distribution of the microsurface transformed by M (row-major, acting
  * on the tangent-plane coordinates (x, y) of the shading frame). Transforming
  * a transformed distribution composes: mf_transformed(mf_transformed(b, M1), M2)
- * is b transformed by M2 M1. An M that fails mf_transform_valid is rejected:
+ * is b transformed by M2 M1. An M that fails mf_transform_is_valid is rejected:
  * base is returned unchanged. The identity gives back base itself, at no cost. */
 MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
 {

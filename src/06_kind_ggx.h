@@ -32,7 +32,7 @@ MF_FORCE_INLINE mf_real mf_ggx_lambda(mf_real ax, mf_real ay, mf_vec3 w)
 /* GGX VNDF by spherical caps (Dupuy & Benyoub 2023, Listing 3), before the
  * final normalization; w need not be unit. (0,0,1) for degenerate input. k
  * scales the cap's lower bound -k v.z: 1 is the whole visible hemisphere, k < 1
- * the bounded cap of Eto & Tokuyoshi 2023 (mf_ggx_sample_visible_bounded). */
+ * the bounded cap of Eto & Tokuyoshi 2023 (mf_brdf_sample_bounded). */
 MF_FORCE_INLINE mf_vec3 mf__ggx_vndf_unnormalized(mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2, mf_real k)
 {
     mf_vec3 v, h;

@@ -31,7 +31,7 @@ MF_INLINE int mf_transform_is_valid(mf_mat2 M)
 /* The distribution of the microsurface transformed by M (row-major, acting
  * on the tangent-plane coordinates (x, y) of the shading frame). Transforming
  * a transformed distribution composes: mf_transformed(mf_transformed(b, M1), M2)
- * is b transformed by M2 M1. An M that fails mf_transform_valid is rejected:
+ * is b transformed by M2 M1. An M that fails mf_transform_is_valid is rejected:
  * base is returned unchanged. The identity gives back base itself, at no cost. */
 MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
 {
