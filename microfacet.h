@@ -173,66 +173,8 @@
  *
  * REVISIONS
  *
- *   0.1.0  first release: Beckmann, GGX, GTR, Student-t; Smith Lambda, G1, G2;
- *          NDF and VNDF sampling; specular BRDF; Fresnel; linearly transformed
- *          microsurfaces for every distribution; LEADR mapping; Linearly
- *          Transformed Cosines (polygon integration, fitter, tables, built-in
- *          GGX table).
- *   0.2.0  Tabulated (piecewise-linear) distributions as a kind of mf_ndf
- *          (mf_tabulated_build, mf_tabulated_from_ndf): every generic operation,
- *          transforms included; mf_ndf gains the field tab.
- *          Microsurface generation: height fields from any distribution
- *          (Ribardiere et al. 2019, Alg. 1) and a virtual gonioreflectometer.
- *          IBM: Inverse Bin Map (thesis ch. 5): builder, save/load, exact
- *          footprint bin weights, filtered glint BRDF, sampling and pdf.
- *   0.3.0  One source file per module under src/, this header generated from
- *          them. Per-kind parameters are typed structs in mf_ndf.p (the
- *          fields gamma, c[] and tab are gone: mf_ndf.p.gtr.gamma, ...,
- *          mf_ndf.p.tabulated.tab); kinds dispatch through MF__NDF_KINDS.
- *          Cold paths (numerical samplers, tabulated and IBM queries) are
- *          compiled once, in the implementation (every unit under nvcc).
- *          Non-inline symbols carry their precision (mf_..._f32/_f64).
- *          Opt-outs MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM,
- *          MF_NO_MICROSURFACE; MF_ASSERT removed (it was never used).
- *          Shading frames (mf_basis: mf_basis_from, mf_to_local, mf_to_world,
- *          mf_basis_ltc), mf_rotated, roughness conventions
- *          (mf_alpha_from_roughness, mf_beckmann_alpha_from_sigma and
- *          inverses), Fresnel helpers (f0 and ior, Schlick with f90,
- *          Gulbrandsen's artist conductor, hemispherical averages), GGX
- *          bounded visible-normal sampling (Eto & Tokuyoshi 2023). Rough
- *          dielectric BSDF (Walter et al. 2007) for every kind, both sides,
- *          eval / pdf / sample / weight, and mf_refract. Beckmann visible
- *          normals by safeguarded Halley steps from a view-dependent start.
- *          Fuzz-found fixes: capped Lambda, D, pdf and LEADR variances, rejected
- *          transforms with an overflowing inverse, LEADR map and LTC input
- *          validation, exact IBM weights of sub-texel footprints, a sample
- *          only where its pdf is positive, mf_clamp maps NaN to the lower
- *          bound, MF_MICROSURFACE_MAX_ITERATIONS; bit-level checks that hold
- *          under -ffast-math. Energy compensation for conductors and
- *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
- *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
- *          mixture of GGX, gamma-3 or gamma-4 GTR, built by mf_gtr with 4-24
- *          nodes as alpha falls; 4.7-18.4x GGX's Lambda in float: mf_ndf is
- *          larger, 376 bytes in float, 720 in double); GTR and Student-t NDF
- *          sampling by the closed-form inverse CDF with one pow (1.7-2.4x
- *          GGX), visible normals by exact rejection from GGX and from exact
- *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at
- *          grazing views for any kind. LTC: rational
- *          edge, one normalization per vertex; tables store M^-1 with a unit
- *          middle entry (the published normalization: the raw data of
- *          mf_ltc_ggx_table, mf_ltc_table and mf_ltc_fit_result.inv changed
- *          meaning), mf_ltc_table_export_rgba16f (the published ltc_1 and
- *          ltc_2 textures in ltc_code's layout and channel order, the
- *          horizon-clipped sphere table in ltc_2.w). MF_FORCE_INLINE on the hot
- *          paths; Beckmann visible normals in closed form at normal
- *          incidence; mf_clamp as a max and a min (no compare-and-blend at
- *          -march=native); faster IBM queries and build (the build 1.3-1.6x
- *          the first 0.3.0 builder's on flake, smooth and rough maps), in
- *          map format 2 (MF_IBM_VERSION 2, smaller: maps saved by 0.2.0
- *          are rebuilt); MF_FAST_MATH; solver iteration
- *          caps reported to tests (MF__SOLVER_DONE). The slope-space and GGX
- *          visible-normal samplers take their azimuth from a polynomial
- *          (CUDA's sincospi on the device) instead of libm sin / cos.
+ *   CHANGELOG.md (beside this header in its repository) lists every change
+ *   of API or numeric output by version.
  */
 #ifndef MICROFACET_H
 #define MICROFACET_H
