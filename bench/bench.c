@@ -217,8 +217,8 @@ static mf_real *ibm_smooth_map(int n)
     int x, y, i;
     if (!m) return NULL;
     for (i = 0; i < 6; ++i) {
-        kx[i] = (double)(int)(9.0 * rnd()) - 4.0;
-        ky[i] = (double)(int)(9.0 * rnd()) - 4.0;
+        kx[i] = (double)(int)(9.0 * (double)rnd()) - 4.0;
+        ky[i] = (double)(int)(9.0 * (double)rnd()) - 4.0;
         if (kx[i] == 0.0 && ky[i] == 0.0) kx[i] = 1.0;
         ph[i] = 6.283185307179586 * (double)rnd();
         amp[i] = (0.5 + (double)rnd()) / 6.0;
@@ -429,19 +429,16 @@ static void bench_microsurface(void)
 {
     mf_ndf d = mf_beckmann(MF_R(0.5), MF_R(0.5)), paper = mf_beckmann(MF_R(1.0606601717798212), MF_R(1.0606601717798212));
     mf_real *h = (mf_real *)malloc(sizeof(mf_real) * 1024 * 1024);
-    mf_microsurface_options o;
     mf_microsurface_stats st;
     mf_gonio g;
     mf_gonio_config cfg;
     int sizes[2] = { 512, 1024 }, k, f, full = getenv("MF_BENCH_FULL") != NULL;
     double t0, t1, e1m, l1;
     if (!h || mf_gonio_init(&g, 8) != MF_SUCCESS) { free(h); return; }
-    mf_microsurface_options_default(&o);
-    for (k = 0; k < 2; ++k) {
+    for (k = 0; k < 2; ++k) {   /* default options (NULL), seed 1 */
         int n = sizes[k], it = (n == 1024 && !full) ? 100 : 500;
-        o.iterations = it; o.seed = 1;
         t0 = now_ns();
-        if (mf_microsurface_generate_ex(&d, n, &o, h, &st) != MF_SUCCESS) continue;
+        if (mf_microsurface_generate_ex(&d, n, it, 1, NULL, h, &st) != MF_SUCCESS) continue;
         t1 = now_ns();
         printf("bench microsurface_generate_%d_x%d %.1f s=%.2f below=%.3f", n, it, (t1 - t0) / ((double)n * n * it),
                (t1 - t0) * 1e-9, (double)st.below);
@@ -449,9 +446,9 @@ static void bench_microsurface(void)
         printf("\n");
     }
     /* tracing speed on a 512^2 surface */
-    o.iterations = 200; o.seed = 2;
-    mf_microsurface_generate_ex(&d, 512, &o, h, &st);
-    mf_gonio_config_default(&cfg);
+    mf_microsurface_generate_ex(&d, 512, 200, 2, NULL, h, &st);
+    memset(&cfg, 0, sizeof cfg);   /* the defaults: mirror facets, no absorption */
+    cfg.seed = 1;
     cfg.wi = mf_vec3_make(MF_R(0.8414709848078965), MF_R(0.0), MF_R(0.5403023058681398));
     for (f = 0; f < 2; ++f) {
         cfg.facet = f ? MF_FACET_LAMBERT : MF_FACET_MIRROR;
@@ -468,7 +465,7 @@ static void bench_microsurface(void)
         }
     }
     /* the paper's Fig. 9 case */
-    mf_microsurface_generate_ex(&paper, 512, &o, h, &st);
+    mf_microsurface_generate_ex(&paper, 512, 200, 2, NULL, h, &st);
     cfg.facet = MF_FACET_MIRROR;
     cfg.wi = mf_vec3_make(MF_R(0.9974949866040544), MF_R(0.0), MF_R(0.0707372016677029));
     cfg.rays = 2000000;
@@ -530,14 +527,14 @@ static double b_brdf_sample(const mf_ndf *d)
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_brdf_sample(d, g_wo[i], g_u1[i], g_u2[i]).wi;
-        s += (double)wi.z + (double)mf_brdf_sample_weight(d, g_wo[i], wi);
+        mf_sample r = mf_brdf_sample(d, g_wo[i], g_u1[i], g_u2[i]);
+        s += (double)r.wi.z + (double)r.weight;
     }
     return s;
 }
 /* Energy compensation: the lobe f_ms (three albedo lookups) against the
- * plain single-scattering mf_brdf; its cosine sample + pdf + weight against
- * mf_brdf_sample + weight; mf_albedo against a plain bilinear read of a
+ * plain single-scattering mf_brdf; its sample record (cosine direction, pdf,
+ * weight) against mf_brdf_sample's record; mf_albedo against a plain bilinear read of a
  * 64 x 64 float array (the baseline of a table lookup). */
 static float g_plain_tab[64 * 64];
 static mf_real plain_bilinear(mf_real a, mf_real mu)
@@ -557,9 +554,8 @@ static double b_ms_sample(const mf_ndf *d)
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_brdf_ms_sample(d, g_wo[i], g_u1[i], g_u2[i]).wi;
-        mf_real p = mf_brdf_ms_pdf(d, g_wo[i], wi);
-        s += (double)wi.z + (p > MF_R(0.0) ? (double)(mf_brdf_ms(d, g_wo[i], wi) * wi.z / p) : 0.0);
+        mf_sample r = mf_brdf_ms_sample(d, g_wo[i], g_u1[i], g_u2[i]);
+        s += (double)r.wi.z + (double)r.weight;
     }
     return s;
 }
@@ -597,10 +593,25 @@ static double b_dielectric_sample(const mf_ndf *d)
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_dielectric_sample(d, g_wo[i], MF_R(1.5), MF_RADIANCE, g_u1[i], g_u2[i], g_u1[(i + 7) % N]).wi;
-        s += (double)wi.z + (double)mf_dielectric_sample_weight(d, g_wo[i], wi, MF_R(1.5));
+        mf_sample r = mf_dielectric_sample(d, g_wo[i], MF_R(1.5), MF_RADIANCE, g_u1[i], g_u2[i], g_u1[(i + 7) % N]);
+        s += (double)r.wi.z + (double)r.weight;
     }
     return s;
+}
+
+/* The 0.3 bounded sampler, which returned a normal: the cap of Dupuy &
+ * Benyoub 2023 shrunk by k (Eto & Tokuyoshi 2023, Eq. 5), u clamped to
+ * [0, 1]; other kinds than untransformed GGX take plain visible normals. The
+ * baseline of the bounded lines below (0.4 has no such call: it returns the
+ * record, mf_brdf_sample_bounded). */
+static mf_vec3 bounded_normal_03(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
+{
+    mf_vec3 h;
+    if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
+    if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf_clamp(u1, MF_R(0.0), MF_R(1.0)), mf_clamp(u2, MF_R(0.0), MF_R(1.0)),
+                                  mf__ggx_bounded_k(d->ax, d->ay, wo));
+    return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
 /* sample, reflect, pdf: plain VNDF and bounded VNDF (the same work) */
@@ -619,7 +630,7 @@ static double b_bounded_pdf(const mf_ndf *d)
     double s = 0.0;
     int i;
     for (i = 0; i < N; ++i) {
-        mf_vec3 wi = mf_reflect(g_wo[i], mf_ggx_sample_visible_bounded(d, g_wo[i], g_u1[i], g_u2[i]));
+        mf_vec3 wi = mf_reflect(g_wo[i], bounded_normal_03(d, g_wo[i], g_u1[i], g_u2[i]));
         s += (double)mf_brdf_pdf_bounded(d, g_wo[i], wi);
     }
     return s;
@@ -682,6 +693,120 @@ static void bench_beckmann_vndf(void)
         run_pair(b_beck_newton, b_beck_vndf, &d, &tb, &to);
         printf("bench beckmann_vndf_%.0fdeg %.2f ratio=%.3f newton_baseline=%.2f alpha=0.3\n", views[v], to, to / tb, tb);
     }
+}
+
+/* ---- The sample record against the 0.3 sequence. A 0.3 sampler returned
+ * the direction alone; the caller then asked for the pdf (for MIS) and the
+ * weight f cos / pdf in separate calls, which evaluate D and Lambda again.
+ * The baselines write that sequence out plainly; both sides sum the
+ * direction's z, the pdf and the weight over the same inputs. ---- */
+static double b_rec_brdf(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_sample r = mf_brdf_sample(d, g_wo[i], g_u1[i], g_u2[i]);
+        s += (double)r.wi.z + (double)r.pdf + (double)r.weight;
+    }
+    return s;
+}
+/* visible normal, reflection, mf_brdf_pdf, weight G2 / G1 = (1 + Lambda(wo))
+ * / (1 + Lambda(wo) + Lambda(wi)) */
+static double b_seq03_brdf(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_vec3 wo = g_wo[i], wi = mf_reflect(wo, mf_sample_visible(d, wo, g_u1[i], g_u2[i]));
+        if (wi.z > MF_R(0.0)) {
+            mf_real pdf = mf_brdf_pdf(d, wo, wi), lo = mf_lambda(d, wo);
+            mf_real w = (MF_R(1.0) + lo) / (MF_R(1.0) + lo + mf_lambda(d, wi));
+            s += (double)wi.z + (double)pdf + (double)w;
+        }
+    }
+    return s;
+}
+static double b_rec_dielectric(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_sample r = mf_dielectric_sample(d, g_wo[i], MF_R(1.5), MF_RADIANCE, g_u1[i], g_u2[i], g_u1[(i + 7) % N]);
+        s += (double)r.wi.z + (double)r.pdf + (double)r.weight;
+    }
+    return s;
+}
+/* the 0.3 dielectric sampler's direction (visible normal of wo's side,
+ * reflection with probability F(wo.m), refraction otherwise), then
+ * mf_dielectric_pdf and the weight mf_dielectric_bsdf |wi.z| / pdf */
+static double b_seq03_dielectric(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_vec3 wo = g_wo[i], m, wi;
+        mf_real eta = MF_R(1.5), sg = MF_R(1.0), c, pdf;
+        if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; sg = MF_R(-1.0); }
+        m = mf_sample_visible(d, wo, g_u1[i], g_u2[i]);
+        c = mf_dot(wo, m);
+        if (!(m.z > MF_R(0.0)) || !(c > MF_R(0.0))) continue;
+        if (g_u1[(i + 7) % N] < mf_fresnel_dielectric(c, eta)) {
+            wi = mf_reflect(wo, m);
+            if (!(wi.z > MF_R(0.0))) continue;
+        } else if (!mf_refract(wo, m, eta, &wi) || !(wi.z < MF_R(0.0))) continue;
+        wi = mf_scale(wi, sg);
+        pdf = mf_dielectric_pdf(d, g_wo[i], wi, MF_R(1.5));
+        if (pdf > MF_R(0.0))
+            s += (double)wi.z + (double)pdf +
+                 (double)(mf_dielectric_bsdf(d, g_wo[i], wi, MF_R(1.5), MF_RADIANCE) * MF_FABS(wi.z) / pdf);
+    }
+    return s;
+}
+static double b_rec_bounded(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_sample r = mf_brdf_sample_bounded(d, g_wo[i], g_u1[i], g_u2[i]);
+        s += (double)r.wi.z + (double)r.pdf + (double)r.weight;
+    }
+    return s;
+}
+/* the 0.3 bounded normal, reflection, mf_brdf_pdf_bounded, weight mf_brdf cos / pdf */
+static double b_seq03_bounded(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_vec3 wo = g_wo[i], wi = mf_reflect(wo, bounded_normal_03(d, wo, g_u1[i], g_u2[i]));
+        mf_real pdf;
+        if (!(wi.z > MF_R(0.0))) continue;
+        pdf = mf_brdf_pdf_bounded(d, wo, wi);
+        if (pdf > MF_R(0.0)) s += (double)wi.z + (double)pdf + (double)(mf_brdf(d, wo, wi) * wi.z / pdf);
+    }
+    return s;
+}
+/* ./build/bench record runs only this */
+static void bench_record(void)
+{
+    struct { const char *name; mf_ndf d; } ks[5];
+    struct { const char *name; bench_fn base, rec; } ops[3];
+    int k, o;
+    ks[0].name = "ggx_a0.3"; ks[0].d = mf_ggx(MF_R(0.3), MF_R(0.3));
+    ks[1].name = "ggx_a0.3_0.1"; ks[1].d = mf_ggx(MF_R(0.3), MF_R(0.1));
+    ks[2].name = "beckmann_a0.3"; ks[2].d = mf_beckmann(MF_R(0.3), MF_R(0.3));
+    ks[3].name = "gtr_a0.3_g1.5"; ks[3].d = mf_gtr(MF_R(0.3), MF_R(1.5));
+    ks[4].name = "ggx_a0.3_transformed";
+    ks[4].d = mf_transformed(mf_ggx(MF_R(0.3), MF_R(0.3)), mf_mat2_make(MF_R(1.5), MF_R(0.3), MF_R(-0.2), MF_R(0.8)));
+    ops[0].name = "brdf_sample"; ops[0].base = b_seq03_brdf; ops[0].rec = b_rec_brdf;
+    ops[1].name = "dielectric_sample"; ops[1].base = b_seq03_dielectric; ops[1].rec = b_rec_dielectric;
+    ops[2].name = "brdf_sample_bounded"; ops[2].base = b_seq03_bounded; ops[2].rec = b_rec_bounded;
+    for (o = 0; o < 3; ++o)
+        for (k = 0; k < 5; ++k) {
+            double tb, tr;
+            run_pair(ops[o].base, ops[o].rec, &ks[k].d, &tb, &tr);
+            printf("bench record_%s_%s %.2f ratio=%.3f seq03_baseline=%.2f\n", ops[o].name, ks[k].name, tr, tr / tb, tb);
+        }
 }
 
 /* GTR Lambda across alpha and gamma (the mixture rule's nodes grow as alpha
@@ -845,9 +970,10 @@ static void bench_ltc_shapes(void)
         for (i = 0; i < reps; ++i) { c.x = (mf_real)(0.2 + 1e-7 * (i & 7)); s += (double)mf_ltc_integrate_disk(&l, c, n, rad, 0); }
         t[1] = now_ns();
         for (i = 0; i < reps; ++i) {   /* plain: the disk's frame, 32 vertices, the polygon integral */
-            mf_vec3 tt, bb, nn = mf_normalize(n), q[32];
+            mf_vec3 nn = mf_normalize(n), q[32];
+            mf_basis fr = mf_basis_from_normal(nn);
+            mf_vec3 tt = fr.t, bb = fr.b;
             c.x = (mf_real)(0.2 + 1e-7 * (i & 7));
-            { mf_basis fr_ = mf_basis_from_normal(nn); tt = fr_.t; bb = fr_.b; }
             for (k = 0; k < 32; ++k) q[k] = mf_add(c, mf_add(mf_scale(tt, rad * cs[k]), mf_scale(bb, rad * sn[k])));
             s += (double)mf_ltc_integrate(&l, q, 32, 0);
         }
@@ -931,6 +1057,10 @@ int main(int argc, char **argv)
         bench_ibm();
         return 0;
     }
+    if (argc > 1 && !strcmp(argv[1], "record")) {
+        bench_record();
+        return 0;
+    }
     if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
         int sec = 0;
         for (i = 0; i < CORE_SECTIONS; ++i)
@@ -944,6 +1074,7 @@ int main(int argc, char **argv)
     }
     bench_core(ks, argc > 1 && !strcmp(argv[1], "ggx") ? 1 : CORE_ALL);
     if (argc > 1 && (!strcmp(argv[1], "core") || !strcmp(argv[1], "ggx"))) return g_sink == g_sink ? 0 : 1;
+    bench_record();
     bench_beckmann_vndf();
     bench_tabulated();
     bench_ibm();

@@ -10,13 +10,14 @@
     double mf_bench_big_tu_##i(const mf_ndf *d, const mf_ltc *l, const mf_vec3 *q, mf_vec3 wo,        \
                                mf_vec3 wi, mf_real u1, mf_real u2)                                     \
     {                                                                                                  \
-        mf_vec3 wm = mf_normalize(mf_add(wo, wi)), s = mf_brdf_sample(d, wo, u1, u2);                  \
-        mf_vec3 t = mf_dielectric_sample(d, wo, MF_R(1.5), u1, u2, u1 * u2);                           \
+        mf_vec3 wm = mf_normalize(mf_add(wo, wi));                                                     \
+        mf_sample s = mf_brdf_sample(d, wo, u1, u2);                                                   \
+        mf_sample t = mf_dielectric_sample(d, wo, MF_R(1.5), MF_RADIANCE, u1, u2, u1 * u2);            \
         return (double)(mf_D(d, wm) + mf_lambda(d, wo) + mf_G1(d, wo, wm) + mf_G2(d, wo, wi, wm) +   \
-                        mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi) + mf_brdf_sample_weight(d, wo, s) +  \
+                        mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi) + s.wi.z + s.pdf + s.weight +      \
                         mf_sample_D(d, u1, u2).z + mf_sample_visible(d, wo, u1, u2).z +                \
-                        mf_dielectric_bsdf(d, wo, t, MF_R(1.5)) + mf_dielectric_pdf(d, wo, t, MF_R(1.5)) + \
-                        mf_dielectric_sample_weight(d, wo, t, MF_R(1.5)) +                             \
+                        mf_dielectric_bsdf(d, wo, t.wi, MF_R(1.5), MF_RADIANCE) +                      \
+                        mf_dielectric_pdf(d, wo, t.wi, MF_R(1.5)) + t.weight +                         \
                         mf_ggx_sample_visible(d->ax, d->ay, wo, u1, u2).x +                            \
                         mf_beckmann_sample_visible(d->ax, d->ay, wo, u1, u2).y +                       \
                         mf_ltc_integrate(l, q, 4, (int)(u1 > u2)) + mf_polygon_irradiance(q, 4, 1));   \

@@ -279,7 +279,7 @@ static void shade(int row, mf_real alpha, mf_vec3 p, mf_vec3 n, mf_vec3 v, rng *
     /* local frame: x axis in the plane of n and v, so wo = (sin, 0, cos) */
     t = sub(v, mf_scale(n, mf_dot(v, n)));
     if (mf_dot(t, t) > MF_R(1e-12)) { t = mf_normalize(t); b = mf_cross(n, t); }
-    else { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
+    else { mf_basis fr = mf_basis_from_normal(n); t = fr.t; b = fr.b; }
     wo = mf_vec3_make(mf_dot(v, t), MF_R(0.0), mf_dot(v, n));
     if (!(wo.z > MF_R(0.0))) return;
     /* LTC: the light relative to p, in the local frame */
@@ -327,15 +327,16 @@ static void shade(int row, mf_real alpha, mf_vec3 p, mf_vec3 n, mf_vec3 v, rng *
     }
     /* MC, BRDF sampling through the visible normals; a sample counts if it hits the light */
     for (i = 0; i < NB; ++i) {
-        mf_real u1 = ((mf_real)(i % NBX) + rng_u(r)) / (mf_real)NBX, su, sv, cl, tl, pl, pb, wgt;
-        mf_vec3 wi = mf_brdf_sample(&d, wo, u1, ((mf_real)(i / NBX) + rng_u(r)) / (mf_real)NBX).wi, w;
-        if (!(wi.z > MF_R(0.0))) continue;
+        mf_real u1 = ((mf_real)(i % NBX) + rng_u(r)) / (mf_real)NBX, su, sv, cl, tl, pl, wgt;
+        mf_sample s = mf_brdf_sample(&d, wo, u1, ((mf_real)(i / NBX) + rng_u(r)) / (mf_real)NBX);
+        mf_vec3 wi = s.wi, w;
+        if (s.lobe == MF_LOBE_NONE) continue;
         w = mf_add(mf_add(mf_scale(t, wi.x), mf_scale(b, wi.y)), mf_scale(n, wi.z));
         tl = hit_light(p, w, &cl, &su, &sv);
         if (!(tl > MF_R(0.0)) || !(cl > MF_R(0.0))) continue;
         pl = tl * tl / (light_area() * cl);
-        pb = mf_brdf_pdf(&d, wo, wi);
-        wgt = mf_brdf_sample_weight(&d, wo, wi) * pb / ((mf_real)NL * pl + (mf_real)NB * pb);
+        /* the record's weight f cos / pdf and pdf: f cos / (NL pl + NB pdf) */
+        wgt = s.weight * s.pdf / ((mf_real)NL * pl + (mf_real)NB * s.pdf);
         emit(row, su, sv, e);
         for (c = 0; c < 3; ++c) spec_mc[c] += e[c] * wgt;
     }

@@ -109,10 +109,11 @@ static mf_vec3 shade_leadr(mf_leadr a, mf_vec3 wo, mf_vec3 sun)
 /* naive: the mesonormal with the base roughness (Beckmann), mirror sky */
 static mf_vec3 shade_naive(mf_leadr a, mf_vec3 wo, mf_vec3 sun)
 {
-    mf_vec3 n = mf_leadr_mean_normal(a), t, b, lo, li, r, c = mf_vec3_make(0, 0, 0);
+    mf_vec3 n = mf_leadr_mean_normal(a), lo, li, r, c = mf_vec3_make(0, 0, 0);
+    mf_basis fr = mf_basis_from_normal(n);
+    mf_vec3 t = fr.t, b = fr.b;
     mf_ndf d = mf_beckmann(base_alpha, base_alpha);
     mf_real spec, diff;
-    { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
     lo = mf_vec3_make(mf_dot(wo, t), mf_dot(wo, b), mf_dot(wo, n));
     li = mf_vec3_make(mf_dot(sun, t), mf_dot(sun, b), mf_dot(sun, n));
     if (!(lo.z > MF_R(0.0))) return c;

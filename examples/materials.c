@@ -13,8 +13,8 @@
  * glass sphere (GGX alpha 0.001) and a rough one (alpha 0.3), eta 1.5, path
  * traced through the sphere with mf_dielectric_sample (radiance transport,
  * up to 32 interface events); in the compensated rows each event picks the
- * single-scattering lobe with probability E(wo) (mf_dielectric_albedo) and
- * the compensation lobe (mf_dielectric_ms_sample) otherwise, so the rough
+ * single-scattering lobe with probability E(wo) (mf_dielectric_ms_table_albedo)
+ * and the compensation lobe (mf_dielectric_ms_table_sample) otherwise, so the rough
  * glass sphere no longer darkens in the furnace. Conductors: one sample of
  * the single-scattering lobe (mf_brdf_sample) plus, in the compensated rows,
  * one of the compensation lobe (mf_brdf_ms_sample, weight pi f_ms). 64
@@ -74,25 +74,23 @@ static void conductor(const mf_ndf *d, int furnace, int comp, mf_vec3 n, mf_real
                       mf_real u3, mf_real u4, const mf_real ms_f[3], mf_real out[3])
 {
     mf_basis f = mf_basis_from(n, mf_vec3_make(MF_R(1.0), MF_R(0.0), MF_R(0.0)));
-    mf_vec3 wo = mf_to_local(&f, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0))), wi, wh;
-    mf_real L[3], w;
+    mf_vec3 wo = mf_to_local(&f, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0))), wh;
+    mf_real L[3];
+    mf_sample s;
     int c;
     out[0] = out[1] = out[2] = MF_R(0.0);
-    wi = mf_brdf_sample(d, wo, u1, u2).wi;
-    if (wi.z > MF_R(0.0)) {
-        w = mf_brdf_sample_weight(d, wo, wi);
-        wh = mf_normalize(mf_add(wo, wi));
-        env(furnace, mf_to_world(&f, wi), L);
+    s = mf_brdf_sample(d, wo, u1, u2);   /* weight f cos / pdf = G2 / G1, Fresnel apart */
+    if (s.lobe != MF_LOBE_NONE) {
+        wh = mf_normalize(mf_add(wo, s.wi));
+        env(furnace, mf_to_world(&f, s.wi), L);
         for (c = 0; c < 3; ++c)
-            out[c] += w * L[c] * (furnace ? MF_R(1.0) : mf_fresnel_conductor(mf_dot(wi, wh), eta_au[c], kap_au[c]));
+            out[c] += s.weight * L[c] * (furnace ? MF_R(1.0) : mf_fresnel_conductor(mf_dot(s.wi, wh), eta_au[c], kap_au[c]));
     }
     if (!comp) return;
-    wi = mf_brdf_ms_sample(d, wo, u3, u4).wi;
-    if (wi.z > MF_R(0.0)) {
-        mf_real p = mf_brdf_ms_pdf(d, wo, wi);
-        w = p > MF_R(0.0) ? mf_brdf_ms(d, wo, wi) * wi.z / p : MF_R(0.0);
-        env(furnace, mf_to_world(&f, wi), L);
-        for (c = 0; c < 3; ++c) out[c] += w * L[c] * (furnace ? MF_R(1.0) : ms_f[c]);
+    s = mf_brdf_ms_sample(d, wo, u3, u4);   /* weight pi f_ms */
+    if (s.lobe != MF_LOBE_NONE) {
+        env(furnace, mf_to_world(&f, s.wi), L);
+        for (c = 0; c < 3; ++c) out[c] += s.weight * L[c] * (furnace ? MF_R(1.0) : ms_f[c]);
     }
 }
 
@@ -104,27 +102,26 @@ static void glass(const mf_ndf *d, const mf_dielectric_ms_table *t, int furnace,
     int k, c;
     out[0] = out[1] = out[2] = MF_R(0.0);
     for (k = 0; k < 32; ++k) {
-        mf_vec3 n = mf_normalize(p), wo, wi, wl;
+        mf_vec3 n = mf_normalize(p), wo, wi;
         mf_basis f = mf_basis_from(n, mf_vec3_make(MF_R(0.0), MF_R(1.0), MF_R(0.0)));
+        mf_sample s;
         mf_real b, tt, e;
         wo = mf_to_local(&f, mf_scale(dir, MF_R(-1.0)));   /* outward normal: air above, glass below */
         /* compensated: the single-scattering lobe with probability E(wo),
          * the compensation lobe otherwise */
         e = t ? mf_dielectric_ms_table_albedo(t, wo) : MF_R(1.0);
         if (!t || rng_u(r) < e) {
-            wl = mf_dielectric_sample(d, wo, GLASS, MF_RADIANCE, rng_u(r), rng_u(r), rng_u(r)).wi;
-            if (wl.x == MF_R(0.0) && wl.y == MF_R(0.0) && wl.z == MF_R(0.0)) return;
-            thr *= mf_dielectric_sample_weight(d, wo, wl, GLASS) / e;
+            s = mf_dielectric_sample(d, wo, GLASS, MF_RADIANCE, rng_u(r), rng_u(r), rng_u(r));
+            if (s.lobe == MF_LOBE_NONE) return;
+            thr *= s.weight / e;
         } else {
-            mf_real pd;
-            wl = mf_dielectric_ms_table_sample(t, wo, MF_RADIANCE, rng_u(r), rng_u(r), rng_u(r)).wi;
-            pd = mf_dielectric_ms_table_pdf(t, wo, wl);
-            if (!(pd > MF_R(0.0))) return;
-            thr *= mf_dielectric_ms_table_bsdf(t, wo, wl, MF_RADIANCE) * MF_FABS(wl.z) / pd / (MF_R(1.0) - e);
+            s = mf_dielectric_ms_table_sample(t, wo, MF_RADIANCE, rng_u(r), rng_u(r), rng_u(r));
+            if (s.lobe == MF_LOBE_NONE) return;
+            thr *= s.weight / (MF_R(1.0) - e);
         }
-        wi = mf_to_world(&f, wl);
+        wi = mf_to_world(&f, s.wi);
         dir = wi;
-        if (wl.z > MF_R(0.0)) {   /* outside: leaves the convex sphere */
+        if (s.wi.z > MF_R(0.0)) {   /* outside: leaves the convex sphere */
             env(furnace, dir, L);
             for (c = 0; c < 3; ++c) out[c] = thr * L[c];
             return;

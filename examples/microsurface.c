@@ -31,6 +31,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define SIZE 256          /* height field */
 #define P 256             /* panel size in pixels */
@@ -112,17 +113,15 @@ int main(int argc, char **argv)
     if (!h || ex_image_init(&im, W, H) || mf_gonio_init(&g, RINGS) != MF_SUCCESS) { fprintf(stderr, "out of memory\n"); return 1; }
     img = im.lin;
     model = (mf_real *)malloc(sizeof(mf_real) * (size_t)g.cells);
-    mf_gonio_config_default(&cfg);
-    cfg.wi = wi; cfg.rays = RAYS;
+    memset(&cfg, 0, sizeof cfg);   /* all-zero: the defaults (mirror facets, no absorption) */
+    cfg.wi = wi; cfg.rays = RAYS; cfg.seed = 1;
     for (e = 0; e < n; ++e) {
-        mf_microsurface_options o;
         mf_microsurface_stats st;
         const mf_ndf *d = &list[e].d;
         int y0 = e * (P + GAP), x, y, c;
         double lo = 1e30, hi = -1e30, vmax = 0.0, l1 = 0.0, sm = 0.0, om = (double)mf_gonio_cell_solid_angle(&g);
-        mf_microsurface_options_default(&o);
-        o.iterations = 200; o.seed = (mf_u64)(e + 1);
-        if (mf_microsurface_generate_ex(d, SIZE, &o, h, &st) != MF_SUCCESS ||
+        /* 200 re-matching iterations; NULL options: the defaults */
+        if (mf_microsurface_generate_ex(d, SIZE, 200, (mf_u64)(e + 1), NULL, h, &st) != MF_SUCCESS ||
             mf_gonio_measure(&g, h, SIZE, &cfg) != MF_SUCCESS || mf_gonio_model(&g, d, wi, 8, model) != MF_SUCCESS) {
             fprintf(stderr, "%s: failed\n", list[e].name);
             status = 1;

@@ -2,7 +2,7 @@
  * spheres: rows GGX, Beckmann, GTR (gamma 1.5), Student-t (gamma 3); columns
  * roughness alpha 0.05, 0.15, 0.3, 0.5, 0.8. Each sphere is lit by one
  * directional light (mf_brdf) and a procedural sky sampled by visible-normal
- * importance sampling (mf_brdf_sample + mf_brdf_sample_weight), with exact
+ * importance sampling (mf_brdf_sample's record: direction and weight), with exact
  * conductor Fresnel per RGB channel. 32 jittered samples per pixel; the sky
  * gets 32 of them on the GGX and Beckmann rows but only 8 on the GTR and
  * Student-t rows, whose exact VNDF samplers are far slower (about 10 s in all
@@ -72,10 +72,11 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
                   mf_real out[3])
 {
     mf_vec3 n = mf_vec3_make(x, y, MF_SQRT(mf_max(MF_R(1.0) - x * x - y * y, MF_R(0.0))));
-    mf_vec3 t, b, wo, wi, wh, lw;
+    mf_basis fr = mf_basis_from_normal(n);
+    mf_vec3 t = fr.t, b = fr.b, wo, wi, wh, lw;
     mf_real f, sk[3];
+    mf_sample s;
     int c;
-    { mf_basis fr_ = mf_basis_from_normal(n); t = fr_.t; b = fr_.b; }
     /* world -> local: components along (t, b, n); the viewer is at +z */
     wo = mf_vec3_make(t.z, b.z, n.z);
     out[0] = out[1] = out[2] = MF_R(0.0);
@@ -89,9 +90,10 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
     }
     /* sky, one importance sample through the visible normals of wo */
     if (sky_w <= MF_R(0.0)) return;
-    wi = mf_brdf_sample(d, wo, u1, u2).wi;
-    if (wi.z <= MF_R(0.0)) return;
-    f = sky_w * mf_brdf_sample_weight(d, wo, wi);
+    s = mf_brdf_sample(d, wo, u1, u2);
+    if (s.lobe == MF_LOBE_NONE) return;
+    wi = s.wi;
+    f = sky_w * s.weight;
     wh = mf_normalize(mf_add(wo, wi));
     sky(mf_add(mf_add(mf_scale(t, wi.x), mf_scale(b, wi.y)), mf_scale(n, wi.z)), sk);
     for (c = 0; c < 3; ++c) out[c] += f * mf_fresnel_conductor(mf_dot(wi, wh), eta[c], kap[c]) * sk[c];

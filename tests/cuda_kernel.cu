@@ -14,9 +14,14 @@ __global__ void mf_kernel(const float *u, float *out, int n)
     k[i & 3] = (i & 4) ? mf_transformed(k[i & 3], mf_mat2_make(MF_R(1.0), MF_R(2.0), MF_R(0.0), MF_R(1.0))) : k[i & 3];
     const mf_ndf *d = &k[i & 3];
     mf_vec3 wo = mf_normalize(mf_vec3_make((mf_real)u[i], MF_R(0.2), MF_R(0.8)));
-    mf_vec3 wi = mf_brdf_sample(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]).wi;
+    mf_sample s = mf_brdf_sample(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);
+    mf_sample sb = mf_brdf_sample_bounded(d, wo, (mf_real)u[i], (mf_real)u[(i + 1) % n]);
+    mf_sample st = mf_dielectric_sample(d, wo, MF_R(1.5), MF_IMPORTANCE, (mf_real)u[i], MF_R(0.3), MF_R(0.6));
+    mf_vec3 wi = s.wi;
     mf_vec3 wm = mf_sample_D(d, (mf_real)u[i], MF_R(0.5));
-    mf_real r = mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi) + mf_brdf_sample_weight(d, wo, wi);
+    mf_real r = mf_brdf(d, wo, wi) + mf_brdf_pdf(d, wo, wi) + s.pdf + s.weight;
+    r += sb.weight + mf_brdf_pdf_bounded(d, wo, sb.wi) + st.weight + mf_dielectric_pdf(d, wo, st.wi, MF_R(1.5));
+    r += mf_dielectric_bsdf(d, wo, st.wi, MF_R(1.5), MF_RADIANCE) + mf_basis_from_normal(wm).t.x;
     r += mf_D(d, wm) + mf_G1(d, wo, wm) + mf_G2_separable(d, wo, wi, wm) + mf_D_visible(d, wo, wm);
     r += mf_fresnel_conductor(wo.z, MF_R(0.2), MF_R(3.9)) + mf_fresnel_dielectric(wo.z, MF_R(1.5));
     r += mf_fresnel_schlick(wo.z, MF_R(0.04)) + mf_beckmann_lambda_approx(MF_R(0.2), MF_R(0.2), wo);

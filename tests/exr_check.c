@@ -91,12 +91,15 @@ static void bumps_normals(float *n, int size, int encoded)
 
 static int same_ibm(const mf_ibm *a, const mf_ibm *b)
 {
-    size_t na = mf_ibm_save(a, NULL, 0), nb = mf_ibm_save(b, NULL, 0);
+    size_t na = 0, nb = 0, wa = 0, wb = 0;
     unsigned char *ba, *bb;
     int same = 0, k;
+    /* buf NULL: the size query */
+    if (mf_ibm_save(a, NULL, 0, &na) != MF_SUCCESS || mf_ibm_save(b, NULL, 0, &nb) != MF_SUCCESS) return 0;
     if (na == 0 || na != nb) return 0;
     ba = (unsigned char *)malloc(na); bb = (unsigned char *)malloc(nb);
-    if (ba && bb && mf_ibm_save(a, ba, na) == na && mf_ibm_save(b, bb, nb) == nb) same = memcmp(ba, bb, na) == 0;
+    if (ba && bb && mf_ibm_save(a, ba, na, &wa) == MF_SUCCESS && mf_ibm_save(b, bb, nb, &wb) == MF_SUCCESS && wa == na && wb == nb)
+        same = memcmp(ba, bb, na) == 0;
     free(ba); free(bb);
     /* and the same filtered BRDF and bin weights at a few footprints */
     for (k = 0; same && k < 4; ++k) {

@@ -84,7 +84,7 @@ int main(void)
         for (i = 0; i < 64; ++i) hh[i] = 0;
         hh[9] = nan;
         if (mf_gonio_init(&go, 4) == MF_SUCCESS) {
-            mf_gonio_config_default(&c);
+            memset(&c, 0, sizeof c);   /* all-zero: the defaults */
             c.wi = mf_vec3_make(0, 0, 1);
             c.rays = 100;
             check(mf_gonio_measure(&go, hh, 8, &c) == MF_ERROR_INVALID_DATA, "gonio_measure with a NaN height");

@@ -41,10 +41,12 @@ int main(int argc, char **argv)
     }
     r = mfx_ibm_from_exr(&ibm, in, encoded, (mf_real)alpha);
     if (r != MF_SUCCESS) { fprintf(stderr, "ibm_from_exr: %s: %s\n", in, mf_result_string(r)); return 1; }
-    bytes = mf_ibm_save(&ibm, NULL, 0);
+    r = mf_ibm_save(&ibm, NULL, 0, &bytes);   /* buf NULL: the size query */
+    if (r != MF_SUCCESS) { fprintf(stderr, "ibm_from_exr: save: %s\n", mf_result_string(r)); mf_ibm_release(&ibm); return 1; }
     buf = malloc(bytes ? bytes : 1);
     if (!buf) { mf_ibm_release(&ibm); fprintf(stderr, "ibm_from_exr: %s\n", mf_result_string(MF_ERROR_OUT_OF_MEMORY)); return 1; }
-    if (mf_ibm_save(&ibm, buf, bytes) != bytes) { fprintf(stderr, "ibm_from_exr: save failed\n"); free(buf); mf_ibm_release(&ibm); return 1; }
+    r = mf_ibm_save(&ibm, buf, bytes, &bytes);
+    if (r != MF_SUCCESS) { fprintf(stderr, "ibm_from_exr: save: %s\n", mf_result_string(r)); free(buf); mf_ibm_release(&ibm); return 1; }
     f = fopen(outp, "wb");
     if (!f || fwrite(buf, 1, bytes, f) != bytes || fclose(f) != 0) {
         fprintf(stderr, "ibm_from_exr: cannot write %s\n", outp);

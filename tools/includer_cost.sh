@@ -10,7 +10,9 @@ mkdir -p "$T" && trap 'rm -rf "$T"' EXIT
 [ $# -gt 0 ] || set -- microfacet.h
 for h in "$@"; do
   cp "$h" "$T/h.h"
-  printf '#include "h.h"\nfloat f(const mf_ndf *d, mf_vec3 wo, float u1, float u2) {\n  mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);\n  return mf_brdf(d, wo, wi);\n}\n' > "$T/inc.c"
+  # 0.4 samplers return the record mf_sample (MF_U_MAX came with it); earlier
+  # headers return the direction
+  printf '#include "h.h"\nfloat f(const mf_ndf *d, mf_vec3 wo, float u1, float u2) {\n#ifdef MF_U_MAX\n  mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2).wi;\n#else\n  mf_vec3 wi = mf_brdf_sample(d, wo, u1, u2);\n#endif\n  return mf_brdf(d, wo, wi);\n}\n' > "$T/inc.c"
   $CC -std=c99 -O0 -c "$T/inc.c" -o "$T/o0.o" || exit 1
   text=$(size "$T/o0.o" | awk 'NR==2{print $1}')
   funcs=$(nm "$T/o0.o" | grep -c ' [tT] ')

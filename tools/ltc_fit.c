@@ -326,11 +326,24 @@ static void progress(int done, int total, void *ctx)
     if (done % 256 == 0 || done == total) fprintf(stderr, "\r%d / %d", done, total);
 }
 
+/* the family of the fitted kind at roughness alpha (gamma: the tail of GTR
+ * and Student-t) */
+typedef struct { int kind; mf_real gamma; } family_ctx;
+static mf_ndf family(mf_real alpha, void *ctx)
+{
+    const family_ctx *f = (const family_ctx *)ctx;
+    if (f->kind == MF_NDF_BECKMANN) return mf_beckmann(alpha, alpha);
+    if (f->kind == MF_NDF_GTR) return mf_gtr(alpha, f->gamma);
+    if (f->kind == MF_NDF_STUDENT_T) return mf_student_t(alpha, alpha, f->gamma);
+    return mf_ggx(alpha, alpha);
+}
+
 int main(int argc, char **argv)
 {
     mf_ltc_table t;
     int kind = MF_NDF_GGX, n = 64, i, k;
     double gamma = 2.0, lo[6], hi[6];
+    family_ctx fc;
     clock_t t0 = clock();
     int module = argc > 1 && !strcmp(argv[1], "--module");
     if (module) {   /* the built-in tables: GGX or Beckmann, n = 64 */
@@ -344,7 +357,9 @@ int main(int argc, char **argv)
     }
     if (argc > 2) gamma = atof(argv[2]);
     if (argc > 3) n = atoi(argv[3]);
-    if (mf_ltc_table_build(&t, kind, (mf_real)gamma, n, n, progress, NULL) != MF_SUCCESS) {
+    fc.kind = kind;
+    fc.gamma = (mf_real)gamma;
+    if (mf_ltc_table_build(&t, family, &fc, n, n, progress, NULL) != MF_SUCCESS) {
         fprintf(stderr, "fit failed\n");
         return 1;
     }

@@ -34,6 +34,7 @@ static void fz_generic(const mf_ndf *d, fz_in *in)
     mf_vec3 wo = mf_normalize(mf_vec3_make(fz_real(in), fz_real(in), MF_R(1.0)));
     mf_vec3 wi = mf_normalize(mf_vec3_make(fz_real(in), fz_real(in), MF_R(1.0)));
     mf_vec3 s;
+    mf_sample r;
     mf_real u1 = fz_unit(in), u2 = fz_unit(in);
     FZ_NONNEG(mf_D(d, wo), "D");
     FZ_NONNEG(mf_lambda(d, wo), "lambda");
@@ -42,14 +43,13 @@ static void fz_generic(const mf_ndf *d, fz_in *in)
     FZ_NONNEG(mf_projected_area(d, wo), "projected_area");
     FZ_NONNEG(mf_brdf(d, wo, wi), "brdf");
     FZ_NONNEG(mf_brdf_pdf(d, wo, wi), "pdf");
-    FZ_NONNEG(mf_brdf_sample_weight(d, wo, wi), "weight");
     s = mf_sample_D(d, u1, u2);
     FZ_VEC(s, "sample_D");
     s = mf_sample_visible(d, wo, u1, u2);
     FZ_VEC(s, "sample_visible");
-    s = mf_brdf_sample(d, wo, u1, u2).wi;
-    FZ_VEC(s, "brdf_sample");
-    if (s.z > MF_R(0.0) && !(mf_brdf_pdf(d, wo, s) > MF_R(0.0))) FZ_FAIL("pdf of a returned sample is 0");
+    r = mf_brdf_sample(d, wo, u1, u2);
+    FZ_SAMPLE(r, "brdf_sample");
+    if (r.lobe != MF_LOBE_NONE && !(mf_brdf_pdf(d, wo, r.wi) > MF_R(0.0))) FZ_FAIL("pdf of a returned sample is 0");
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -58,6 +58,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     unsigned which = fz_u8(&in) % 5u;
     if (which == 0) {
         mf_ibm ibm;
+        mf_ibm_options o;
         int w = 1 + (int)(fz_u8(&in) % 24u), h = 1 + (int)(fz_u8(&in) % 24u), res = (int)(fz_u8(&in) % 40u);
         /* raw alpha one time in 64: small alphas give up to 1024^2 bins, slow */
         unsigned am = fz_u8(&in);
@@ -68,16 +69,23 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
          * bins (0.5 s a build under ASan, over the 1 s limit on a busy
          * machine): give those an explicit resolution */
         if (((am & 63u) == 0u || (cm & 15u) == 1u) && res == 0) res = 1 + (int)(cm >> 2);
+        o.resolution = res;
+        o.cut_sigmas = cut;
         fz_normals(&in, w * h);
-        if (mf_ibm_build_ex(&ibm, fz_buf, w, h, alpha, res, cut) == MF_SUCCESS) {
+        if (mf_ibm_build_ex(&ibm, fz_buf, w, h, alpha, &o) == MF_SUCCESS) {
             mf_footprint f;
             mf_ibm ld;
-            size_t n = mf_ibm_save(&ibm, NULL, 0);
-            void *buf = malloc(n);
+            mf_sample r;
+            size_t n = 0, m = 0;
+            void *buf;
             mf_real pdf;
             mf_vec3 wo = mf_normalize(mf_vec3_make(fz_real(&in), fz_real(&in), MF_R(1.0)));
             mf_vec3 wi = mf_normalize(mf_vec3_make(fz_real(&in), fz_real(&in), MF_R(1.0)));
-            if (mf_ibm_save(&ibm, buf, n) != n) FZ_FAIL("save size");
+            if (mf_ibm_save(&ibm, NULL, 0, &n) != MF_SUCCESS || n == 0) FZ_FAIL("save size query");
+            buf = malloc(n);
+            if (!buf) abort();
+            if (mf_ibm_save(&ibm, buf, n - 1, &m) != MF_ERROR_BUFFER_TOO_SMALL || m != n) FZ_FAIL("save into a short buffer");
+            if (mf_ibm_save(&ibm, buf, n, &m) != MF_SUCCESS || m != n) FZ_FAIL("save size");
             if (mf_ibm_load(&ld, buf, n) != MF_SUCCESS) FZ_FAIL("a saved map does not load");
             mf_ibm_release(&ld);
             free(buf);
@@ -90,8 +98,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             }
             FZ_NONNEG(mf_ibm_brdf_and_pdf(&ibm, &f, wo, wi, &pdf), "ibm brdf");
             FZ_NONNEG(pdf, "ibm pdf");
-            wi = mf_ibm_sample(&ibm, &f, wo, fz_unit(&in), fz_unit(&in), fz_unit(&in), fz_unit(&in)).wi;
-            FZ_VEC(wi, "ibm sample");
+            r = mf_ibm_sample(&ibm, &f, wo, fz_unit(&in), fz_unit(&in), fz_unit(&in), fz_unit(&in));
+            FZ_SAMPLE(r, "ibm sample");
             mf_ibm_release(&ibm);
         }
     } else if (which == 1) {

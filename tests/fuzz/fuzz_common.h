@@ -52,5 +52,14 @@ static char fz_ctx[1024];
 #define FZ_FIN(x, what) do { double fz_v_ = (double)(x); \
     if (!fz_finite(fz_v_)) FZ_FAIL("%s = %g", what, fz_v_); } while (0)
 #define FZ_VEC(v, what) do { FZ_FIN((v).x, what ".x"); FZ_FIN((v).y, what ".y"); FZ_FIN((v).z, what ".z"); } while (0)
+/* a sampler's record (the 0.4 contract): every field finite, pdf and weight
+ * >= 0; a direction only with pdf > 0; no sample: MF_LOBE_NONE and zeros */
+#define FZ_SAMPLE(r, what) do { FZ_VEC((r).wi, what ".wi"); FZ_NONNEG((r).pdf, what ".pdf"); \
+    FZ_NONNEG((r).weight, what ".weight"); \
+    if ((r).lobe == MF_LOBE_NONE) { \
+        if ((r).pdf != 0 || (r).weight != 0 || (r).wi.x != 0 || (r).wi.y != 0 || (r).wi.z != 0) \
+            FZ_FAIL("%s: no sample (MF_LOBE_NONE) with nonzero fields", what); \
+    } else if ((r).lobe != MF_LOBE_REFLECTION && (r).lobe != MF_LOBE_TRANSMISSION) FZ_FAIL("%s: lobe %d", what, (r).lobe); \
+    else if (!((r).pdf > 0)) FZ_FAIL("%s: a direction with pdf 0", what); } while (0)
 
 #endif

@@ -2,7 +2,8 @@
  * arbitrary float bit patterns for parameters and random numbers, unit
  * directions from arbitrary bit patterns (see fz_dir).
  * Asserts: no crash, no NaN/Inf, pdf >= 0, pdf(sample) > 0 for every
- * returned sample, finite weights. */
+ * returned sample, finite weights; each sampler's record keeps the 0.4
+ * contract (FZ_SAMPLE). */
 #include "fuzz_common.h"
 
 static mf_tabulated fz_tab;
@@ -68,6 +69,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     mf_ndf d = fz_ndf(&in);
     mf_vec3 wo = fz_dir(&in), wi = fz_dir(&in), wm = fz_dir(&in), s;
     mf_real u1 = fz_unit(&in), u2 = fz_unit(&in), v;
+    mf_sample r;
     snprintf(fz_ctx, sizeof fz_ctx, "type %d ax %.9g ay %.9g p0 %.9g p1 %.9g p2 %.9g tr %d M %.9g %.9g %.9g %.9g "
              "wo %.9g %.9g %.9g wi %.9g %.9g %.9g wm %.9g %.9g %.9g u %.9g %.9g", (int)d.type, (double)d.ax, (double)d.ay,
              (double)((mf_real *)&d.p)[0], (double)((mf_real *)&d.p)[1], (double)((mf_real *)&d.p)[2], d.transformed,
@@ -84,18 +86,21 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FZ_NONNEG(v, "projected_area");
     FZ_NONNEG(mf_brdf(&d, wo, wi), "brdf");
     FZ_NONNEG(mf_brdf_pdf(&d, wo, wi), "brdf_pdf");
-    FZ_NONNEG(mf_brdf_sample_weight(&d, wo, wi), "brdf_sample_weight");
+    FZ_NONNEG(mf_brdf_pdf_bounded(&d, wo, wi), "brdf_pdf_bounded");
     s = mf_sample_D(&d, u1, u2);
     FZ_VEC(s, "sample_D");
     s = mf_sample_visible(&d, wo, u1, u2);
     FZ_VEC(s, "sample_visible");
-    s = mf_brdf_sample(&d, wo, u1, u2).wi;
-    FZ_VEC(s, "brdf_sample");
-    if (s.z > MF_R(0.0)) {
-        mf_real p = mf_brdf_pdf(&d, wo, s), w = mf_brdf_sample_weight(&d, wo, s), f = mf_brdf(&d, wo, s);
+    r = mf_brdf_sample(&d, wo, u1, u2);
+    FZ_SAMPLE(r, "brdf_sample");
+    if (r.lobe != MF_LOBE_NONE) {
+        mf_real p = mf_brdf_pdf(&d, wo, r.wi), f = mf_brdf(&d, wo, r.wi);
+        if (!(r.wi.z > MF_R(0.0))) FZ_FAIL("brdf_sample below the horizon: z = %g", (double)r.wi.z);
         if (!(p > MF_R(0.0)) || !fz_finite((double)p)) FZ_FAIL("pdf of a returned sample = %g", (double)p);
-        FZ_NONNEG(w, "weight of a returned sample");
         FZ_NONNEG(f, "brdf of a returned sample");
     }
+    r = mf_brdf_sample_bounded(&d, wo, u1, u2);
+    FZ_SAMPLE(r, "brdf_sample_bounded");
+    if (r.lobe != MF_LOBE_NONE && !(r.wi.z > MF_R(0.0))) FZ_FAIL("brdf_sample_bounded below the horizon: z = %g", (double)r.wi.z);
     return 0;
 }

@@ -9,7 +9,8 @@ static void fz_query(const mf_ibm *ibm, fz_in *in)
     int nb = mf_ibm_bin_count(ibm), i, bins[MF_IBM_MAX_WINDOW];
     mf_real w[MF_IBM_MAX_WINDOW], pdf;
     mf_footprint f;
-    mf_vec3 wo, wi, s;
+    mf_vec3 wo, wi;
+    mf_sample s;
     for (i = 0; i < nb && i < 64; ++i) {
         mf_vec3 n = mf_ibm_bin_normal(ibm, i);
         FZ_VEC(n, "bin_normal");
@@ -33,8 +34,8 @@ static void fz_query(const mf_ibm *ibm, fz_in *in)
     FZ_NONNEG(mf_ibm_pdf(ibm, &f, wo, wi), "ibm_pdf");
     FZ_NONNEG(mf_ibm_brdf_and_pdf(ibm, &f, wo, wi, &pdf), "ibm_brdf_pdf");
     FZ_NONNEG(pdf, "ibm_brdf_pdf pdf");
-    s = mf_ibm_sample(ibm, &f, wo, fz_unit(in), fz_unit(in), fz_unit(in), fz_unit(in)).wi;
-    FZ_VEC(s, "ibm_sample");
+    s = mf_ibm_sample(ibm, &f, wo, fz_unit(in), fz_unit(in), fz_unit(in), fz_unit(in));
+    FZ_SAMPLE(s, "ibm_sample");
 }
 
 static unsigned char *fz_valid;
@@ -51,9 +52,9 @@ static void fz_make_valid(void)
         n[3 * i] = v.x; n[3 * i + 1] = v.y; n[3 * i + 2] = v.z;
     }
     if (mf_ibm_build(&ibm, n, 8, 8, MF_R(0.2)) != MF_SUCCESS) abort();
-    fz_valid_n = mf_ibm_save(&ibm, NULL, 0);
+    if (mf_ibm_save(&ibm, NULL, 0, &fz_valid_n) != MF_SUCCESS) abort();   /* buf NULL: the size */
     fz_valid = (unsigned char *)malloc(fz_valid_n);
-    mf_ibm_save(&ibm, fz_valid, fz_valid_n);
+    if (!fz_valid || mf_ibm_save(&ibm, fz_valid, fz_valid_n, &fz_valid_n) != MF_SUCCESS) abort();
     mf_ibm_release(&ibm);
 }
 
