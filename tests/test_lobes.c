@@ -110,7 +110,305 @@ static void test_f82(void)
     }
 }
 
+/* ---- EON ------------------------------------------------------------------ */
+
+typedef double (*hemi_fn)(mf_vec3 wi, void *ctx);
+/* int g(wi) dwi over the upper hemisphere, wo in the xz plane at theta_o:
+ * theta split at theta_o (FON's max(mu_o, mu_i)), phi at pi/2 (the sign of s),
+ * g symmetric in y; panels x 16-point Gauss-Legendre in each piece */
+static double hemi_int(hemi_fn g, void *ctx, double theta_o, int panels)
+{
+    double x[16], w[16], th[3] = { 0.0, theta_o, 1.5707963267948966 }, ph[3] = { 0.0, 1.5707963267948966, 3.141592653589793 };
+    double sum = 0.0;
+    int a, b, pa, pb, i, j;
+    mft_gl(16, x, w);
+    for (a = 0; a < 2; ++a) {
+        double t0 = th[a], t1 = th[a + 1];
+        if (!(t1 > t0)) continue;
+        for (b = 0; b < 2; ++b)
+            for (pa = 0; pa < panels; ++pa)
+                for (pb = 0; pb < panels; ++pb)
+                    for (i = 0; i < 16; ++i) {
+                        double ht = (t1 - t0) / panels, t = t0 + ht * (pa + x[i]);
+                        for (j = 0; j < 16; ++j) {
+                            double hp = (ph[b + 1] - ph[b]) / panels, p = ph[b] + hp * (pb + x[j]);
+                            mf_vec3 wi = mft_dir(t, p);
+                            sum += 2.0 * ht * hp * w[i] * w[j] * sin(t) * g(wi, ctx);
+                        }
+                    }
+    }
+    return sum;
+}
+static double rad(double deg) { return deg * 3.14159265358979323846 / 180.0; }
+
+/* FON single scattering at rho = 1 (Fujii; EON Eq. 3-4), written here */
+static double ref_fon(mf_vec3 wo, mf_vec3 wi, double sigma)
+{
+    double mo = wo.z, mi = wi.z, s = (double)wo.x * wi.x + (double)wo.y * wi.y + (double)wo.z * wi.z - mo * mi;
+    double A = 1.0 / (1.0 + (0.5 - 2.0 / (3.0 * 3.14159265358979323846)) * sigma), B = sigma * A;
+    double t = s > 0.0 ? (mo > mi ? mo : mi) : 1.0;
+    if (!(mo > 0.0) || !(mi > 0.0)) return 0.0;
+    return (A + B * s / t) / 3.14159265358979323846;
+}
+typedef struct { mf_vec3 wo; double rho, sigma; int what; } eon_ctx;
+static double eon_g(mf_vec3 wi, void *p)
+{
+    const eon_ctx *c = (const eon_ctx *)p;
+    double f;
+    switch (c->what) {
+    case 0: return ref_fon(c->wo, wi, c->sigma) * wi.z;                                   /* E_F */
+    case 1: return (double)mf_eon_brdf(c->wo, wi, (mf_real)c->rho, (mf_real)c->sigma) * wi.z;   /* E */
+    case 3: f = (double)mf_eon_brdf(c->wo, wi, MF_R(1.0), (mf_real)c->sigma) * wi.z;       /* second moment */
+            return f > 0.0 ? f * f / (double)mf_eon_pdf(c->wo, wi, (mf_real)c->sigma) : 0.0;
+    default: f = (double)mf_eon_brdf(c->wo, wi, MF_R(1.0), (mf_real)c->sigma);            /* same, cosine pdf */
+             return f * f * wi.z * 3.14159265358979323846;
+    }
+}
+/* FON's directional albedo by quadrature (independent of the closed form) */
+static double ref_ef(double mu, double sigma)
+{
+    eon_ctx c;
+    c.wo = mf_vec3_make((mf_real)sqrt(1.0 - mu * mu), MF_R(0.0), (mf_real)mu);
+    c.sigma = sigma; c.rho = 1.0; c.what = 0;
+    return hemi_int(eon_g, &c, acos(mu), 2);
+}
+static double ref_ef_avg(double sigma)
+{
+    double x[16], w[16], sum = 0.0;
+    int p, i;
+    mft_gl(16, x, w);
+    for (p = 0; p < 4; ++p)
+        for (i = 0; i < 16; ++i) {
+            double mu = (p + x[i]) / 4.0;
+            sum += 2.0 * mu * ref_ef(mu, sigma) * w[i] / 4.0;
+        }
+    return sum;
+}
+
+static void test_eon_eval(void)
+{
+    static const double sig[6] = { 0.0, 0.05, 0.25, 0.5, 0.75, 1.0 };
+    static const double th[9] = { 0.0, 10.0, 30.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.99 };
+    static const double rhos[3] = { 1.0, 0.8, 0.3 };
+    double worst_furnace = 0.0, worst_alb = 0.0, worst_f = 0.0, worst_ef = 0.0, worst_avg = 0.0, worst_rec = 0.0;
+    int i, j, k;
+    mft_rng r;
+    /* white furnace and albedo: quadrature of mf_eon_brdf cos against 1 and mf_eon_albedo */
+    for (i = 0; i < 6; ++i)
+        for (j = 0; j < 9; ++j)
+            for (k = 0; k < 3; ++k) {
+                eon_ctx c;
+                double e, a;
+                c.wo = mft_dir(rad(th[j]), 0.0); c.rho = rhos[k]; c.sigma = sig[i]; c.what = 1;
+                e = hemi_int(eon_g, &c, rad(th[j]), 4);
+                a = (double)mf_eon_albedo(c.wo.z, (mf_real)rhos[k], (mf_real)sig[i]);
+                if (k == 0 && !(fabs(e - 1.0) <= worst_furnace)) worst_furnace = mft_finite(e) ? fabs(e - 1.0) : 1.0;
+                if (!(fabs(e - a) <= worst_alb)) worst_alb = mft_finite(a) ? fabs(e - a) : 1.0;
+            }
+    /* the closed-form FON albedo against quadrature of FON, and its average */
+    for (i = 0; i < 6; ++i) {
+        double avg_q = ref_ef_avg(sig[i]), avg_c = 0.0, x[16], w[16];
+        int p;
+        mft_gl(16, x, w);
+        for (j = 0; j < 9; ++j) {
+            double mu = cos(rad(th[j])), ef = ref_ef(mu, sig[i]);
+            /* E_F from mf_eon_albedo at rho = 1/2 ... through E = rho E_F + rho_ms (1 - E_F) */
+            double rho = 0.5, A = 1.0 / (1.0 + (0.5 - 2.0 / (3.0 * 3.14159265358979323846)) * sig[i]);
+            double eavg = avg_q, rms = rho * rho * eavg / (1.0 - rho * (1.0 - eavg));
+            double want = rho * ef + rms * (1.0 - ef);
+            double got = (double)mf_eon_albedo((mf_real)mu, (mf_real)rho, (mf_real)sig[i]);
+            (void)A;
+            if (!(fabs(got - want) <= worst_ef)) worst_ef = mft_finite(got) ? fabs(got - want) : 1.0;
+        }
+        /* mf_eon_albedo_average against 2 int E mu dmu of mf_eon_albedo */
+        for (k = 1; k < 3; ++k) {
+            avg_c = 0.0;
+            for (p = 0; p < 8; ++p)
+                for (j = 0; j < 16; ++j) {
+                    double mu = (p + x[j]) / 8.0;
+                    avg_c += 2.0 * mu * (double)mf_eon_albedo((mf_real)mu, (mf_real)rhos[k], (mf_real)sig[i]) * w[j] / 8.0;
+                }
+            if (!(fabs(avg_c - (double)mf_eon_albedo_average((mf_real)rhos[k], (mf_real)sig[i])) <= worst_avg))
+                worst_avg = fabs(avg_c - (double)mf_eon_albedo_average((mf_real)rhos[k], (mf_real)sig[i]));
+        }
+        /* mf_eon_brdf pointwise against the paper's definition built on the quadrature E_F */
+        mft_seed(&r, 100 + i);
+        for (k = 0; k < 12; ++k) {
+            mf_vec3 wo = mft_dir(acos(mft_u01(&r)), 0.0), wi = mft_dir(acos(mft_u01(&r)), 6.283185307179586 * mft_u01(&r));
+            double rho = mft_u01(&r), efo = ref_ef(wo.z, sig[i]), efi = ref_ef(wi.z, sig[i]);
+            double rms = rho * rho * avg_q / (1.0 - rho * (1.0 - avg_q));
+            double want = rho * ref_fon(wo, wi, sig[i])
+                        + (sig[i] > 0.0 ? rms / 3.14159265358979323846 * (1.0 - efo) * (1.0 - efi) / (1.0 - avg_q) : 0.0);
+            double got = (double)mf_eon_brdf(wo, wi, (mf_real)rho, (mf_real)sig[i]);
+            if (!(fabs(got - want) <= worst_f * want)) worst_f = mft_finite(got) ? fabs(got - want) / want : 1.0;
+            /* reciprocity */
+            got = fabs((double)mf_eon_brdf(wi, wo, (mf_real)rho, (mf_real)sig[i]) - got) / want;
+            if (!(got <= worst_rec)) worst_rec = mft_finite(got) ? got : 1.0;
+        }
+    }
+    printf("    eon: |furnace - 1| %.3g, |quadrature - mf_eon_albedo| %.3g (6 sigma x 9 views x 3 rho); "
+           "albedo vs quadrature E_F %.3g, average %.3g; f vs definition (rel) %.3g, reciprocity %.3g\n",
+           worst_furnace, worst_alb, worst_ef, worst_avg, worst_f, worst_rec);
+    MFT_NEAR(worst_furnace, 0.0, 0.0, 1e-3, "eon: white furnace (rho 1) = 1 within 1e-3, sigma in [0, 1], views to 89.99 deg");
+    MFT_NEAR(worst_furnace, 0.0, 0.0, MFT_TOL(1e-9, 2e-6), "eon: white furnace, to the quadrature's accuracy");
+    MFT_NEAR(worst_alb, 0.0, 0.0, MFT_TOL(1e-9, 2e-6), "eon: mf_eon_albedo = quadrature of f cos");
+    MFT_NEAR(worst_ef, 0.0, 0.0, MFT_TOL(1e-9, 2e-6), "eon: closed-form E_F and E_F_avg = quadrature of FON");
+    MFT_NEAR(worst_avg, 0.0, 0.0, MFT_TOL(1e-9, 2e-6), "eon: mf_eon_albedo_average = 2 int E mu dmu");
+    MFT_NEAR(worst_f, 0.0, 0.0, MFT_TOL(1e-8, 2e-6), "eon: f = FON + the multiple-scattering lobe of quadrature E_F (relative)");
+    MFT_NEAR(worst_rec, 0.0, 0.0, MFT_TOL(1e-14, 1e-6), "eon: reciprocity f(wo, wi) = f(wi, wo)");
+    /* sigma = 0 is Lambert */
+    MFT_NEAR(mf_eon_brdf(mft_dir(0.3, 0.0), mft_dir(1.2, 2.0), MF_R(0.7), MF_R(0.0)), 0.7 / 3.14159265358979323846,
+             MFT_TOL(1e-15, 1e-7), 0.0, "eon: sigma 0 is Lambert rho/pi");
+    /* the fast albedo: its largest distance to the exact one over mu, sigma, rho in [0, 1] */
+    {
+        double worst = 0.0, wmu = 0, ws = 0, wr = 0;
+        for (i = 0; i <= 1000; ++i)
+            for (j = 0; j <= 50; ++j)
+                for (k = 0; k <= 10; ++k) {
+                    double mu = i / 1000.0, sg = j / 50.0, rho = k / 10.0;
+                    double e = fabs((double)mf_eon_albedo_fast((mf_real)mu, (mf_real)rho, (mf_real)sg)
+                                    - (double)mf_eon_albedo((mf_real)mu, (mf_real)rho, (mf_real)sg));
+                    if (!(e <= worst)) { worst = mft_finite(e) ? e : 1.0; wmu = mu; ws = sg; wr = rho; }
+                }
+        printf("    eon: fast albedo within %.3g of the exact one (worst at mu %g, sigma %g, rho %g)\n", worst, wmu, ws, wr);
+        MFT_NEAR(worst, 0.0, 0.0, 1.5e-4, "eon: mf_eon_albedo_fast within 1.5e-4 of mf_eon_albedo");
+    }
+    /* out of the domain */
+    MFT_CHECK(mf_eon_brdf(mft_dir(0.3, 0.0), mf_vec3_make(0, 0, -1), 1, 1) == 0 && mf_eon_brdf(mf_vec3_make(0, 0, -1), mft_dir(0.3, 0.0), 1, 1) == 0
+              && mf_eon_pdf(mft_dir(0.3, 0.0), mf_vec3_make(0, 0, -1), 1) == 0 && mf_eon_albedo(MF_R(-0.5), 1, 1) == 0
+              && mf_eon_sample(mf_vec3_make(0, 0, -1), 1, 1, MF_R(0.5), MF_R(0.5)).lobe == MF_LOBE_NONE,
+              "eon: below the horizon gives 0 / no sample");
+}
+
+#define EA 16
+#define EP 32
+/* probability of each (z ring, phi sector) cell under the pdf, 4 x 4 sub-cells of 8 x 8 nodes */
+static void eon_cell_probs(mf_vec3 wo, double sigma, double *prob)
+{
+    double x[8], w[8];
+    int a, p, sa, sp, i, j;
+    mft_gl(8, x, w);
+    for (a = 0; a < EA; ++a)
+        for (p = 0; p < EP; ++p) {
+            double sum = 0.0;
+            for (sa = 0; sa < 4; ++sa)
+                for (sp = 0; sp < 4; ++sp)
+                    for (i = 0; i < 8; ++i)
+                        for (j = 0; j < 8; ++j) {
+                            double z = (a + (sa + x[i]) / 4.0) / EA, ph = 6.283185307179586 * (p + (sp + x[j]) / 4.0) / EP;
+                            double st = sqrt(1.0 - z * z);
+                            mf_vec3 wi = mf_vec3_make((mf_real)(st * cos(ph)), (mf_real)(st * sin(ph)), (mf_real)z);
+                            sum += w[i] * w[j] * (double)mf_eon_pdf(wo, wi, (mf_real)sigma);
+                        }
+            prob[a * EP + p] = sum / 16.0 * (1.0 / EA) * (6.283185307179586 / EP);
+        }
+}
+static int eon_cell_of(mf_vec3 wi)
+{
+    double ph = atan2((double)wi.y, (double)wi.x);
+    int a = (int)((double)wi.z * EA), p;
+    if (ph < 0.0) ph += 6.283185307179586;
+    p = (int)(ph / 6.283185307179586 * EP);
+    if (a < 0) a = 0;
+    if (a >= EA) a = EA - 1;
+    if (p >= EP) p = EP - 1;
+    return a * EP + p;
+}
+
+static void test_eon_sample(void)
+{
+    static const double sig[4] = { 0.0, 0.3, 0.7, 1.0 };
+    static const double th[6] = { 0.0, 30.0, 60.0, 80.0, 88.0, 89.99 };
+    static double obs[EA * EP + 1], ex[EA * EP + 1];
+    double worst_z = 0.0, worst_pdf = 0.0, worst_w = 0.0, worst_int = 0.0;
+    int i, j, k, n = 100000, bad = 0;
+    for (i = 0; i < 4; ++i)
+        for (j = 0; j < 6; ++j) {
+            mf_vec3 wo = mft_dir(rad(th[j]), 0.7 * j);
+            double tot = 0.0, z;
+            int dof;
+            mft_rng r;
+            eon_cell_probs(wo, sig[i], ex);
+            for (k = 0; k < EA * EP; ++k) { tot += ex[k]; ex[k] *= n; obs[k] = 0.0; }
+            z = fabs(tot - 1.0);
+            if (!(z <= worst_int)) worst_int = mft_finite(z) ? z : 1.0;
+            ex[EA * EP] = n * (tot < 1.0 ? 1.0 - tot : 0.0);
+            obs[EA * EP] = 0.0;
+            mft_seed(&r, 4200 + 10 * i + j);
+            for (k = 0; k < n; ++k) {
+                double rho = mft_u01(&r);
+                mf_sample s = mf_eon_sample(wo, (mf_real)rho, (mf_real)sig[i], (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                double pdf, f, e;
+                if (s.lobe == MF_LOBE_NONE) { obs[EA * EP] += 1.0; continue; }
+                if (!(s.wi.z > 0) || !(s.pdf > 0) || s.lobe != MF_LOBE_REFLECTION) { ++bad; continue; }
+                obs[eon_cell_of(s.wi)] += 1.0;
+                pdf = (double)mf_eon_pdf(wo, s.wi, (mf_real)sig[i]);
+                e = fabs((double)s.pdf - pdf) / pdf;
+                if (!(e <= worst_pdf)) worst_pdf = mft_finite(e) ? e : 1.0;
+                f = (double)mf_eon_brdf(wo, s.wi, (mf_real)rho, (mf_real)sig[i]) * s.wi.z / pdf;
+                e = fabs((double)s.weight - f) / (f > 1e-30 ? f : 1e-30);
+                if (!(e <= worst_w)) worst_w = mft_finite(e) ? e : 1.0;
+            }
+            z = mft_chi2(obs, ex, EA * EP + 1, &dof);
+            if (!(fabs(z) <= worst_z)) worst_z = mft_finite(z) ? fabs(z) : 1e9;
+        }
+    printf("    eon sampling: worst |chi-square z| %.2f (4 sigma x 6 views, 1e5 samples, 513 bins with the lost one); "
+           "|int pdf - 1| %.3g; record pdf vs mf_eon_pdf %.3g, weight vs f cos / pdf %.3g (relative)\n",
+           worst_z, worst_int, worst_pdf, worst_w);
+    MFT_CHECK(bad == 0, "eon sampling: every sample above the horizon with pdf > 0");
+    MFT_CHECK(worst_z < 4.5, "eon sampling: chi-square of the samples against mf_eon_pdf (|z| < 4.5, 24 cases)");
+    MFT_NEAR(worst_int, 0.0, 0.0, MFT_TOL(1e-6, 1e-5), "eon sampling: mf_eon_pdf integrates to 1 (nothing lost)");
+    MFT_NEAR(worst_pdf, 0.0, 0.0, MFT_TOL(1e-9, 1e-3), "eon sampling: record pdf = mf_eon_pdf");
+    MFT_NEAR(worst_w, 0.0, 0.0, MFT_TOL(1e-9, 1e-3), "eon sampling: weight = f cos / pdf");
+    /* u corners give valid samples */
+    {
+        static const double us[5] = { 0.0, 5.9604644775390625e-08, 0.5, 1.0 - 5.9604644775390625e-08, 1.0 };
+        static const double ths[4] = { 0.0, 45.0, 89.0, 89.99 };
+        static const double sg[3] = { 0.0, 0.5, 1.0 };
+        int a, b, bad_c = 0;
+        double worst_c = 0.0;
+        for (i = 0; i < 4; ++i)
+            for (j = 0; j < 3; ++j)
+                for (a = 0; a < 5; ++a)
+                    for (b = 0; b < 5; ++b) {
+                        mf_vec3 wo = mft_dir(rad(ths[i]), 1.0);
+                        mf_sample s = mf_eon_sample(wo, MF_R(0.8), (mf_real)sg[j], (mf_real)us[a], (mf_real)us[b]);
+                        double len = sqrt((double)mf_dot(s.wi, s.wi)), pdf = (double)mf_eon_pdf(wo, s.wi, (mf_real)sg[j]);
+                        if (s.lobe != MF_LOBE_REFLECTION || !(s.wi.z > 0) || !(s.pdf > 0) || !(s.pdf < MF_BIG)
+                            || !(s.weight >= 0) || !(s.weight < MF_BIG) || fabs(len - 1.0) > 1e-5 || !(pdf > 0)) {
+                            ++bad_c;
+                            printf("    eon corner: theta %g sigma %g u (%g, %g): lobe %d wi.z %g pdf %g weight %g\n",
+                                   ths[i], sg[j], us[a], us[b], s.lobe, (double)s.wi.z, (double)s.pdf, (double)s.weight);
+                            continue;
+                        }
+                        if (!(fabs(s.pdf - pdf) / pdf <= worst_c)) worst_c = fabs(s.pdf - pdf) / pdf;
+                    }
+        printf("    eon corners: record pdf vs mf_eon_pdf at u in {0, 2^-24, 1/2, 1 - 2^-24, 1}^2: %.3g (relative)\n", worst_c);
+        MFT_CHECK(bad_c == 0, "eon sampling: u corners give a valid sample (views to 89.99 deg, sigma 0, 1/2, 1)");
+        MFT_NEAR(worst_c, 0.0, 0.0, MFT_TOL(1e-6, 1e-2), "eon sampling: corners' record pdf = mf_eon_pdf");
+    }
+    /* the variance of the albedo estimate (rho = 1, sigma = 1) against cosine sampling */
+    {
+        static const double tv[6] = { 0.0, 30.0, 60.0, 75.0, 85.0, 89.0 };
+        double worse = 0.0;
+        printf("    eon variance at sigma 1 (rho 1), clipped LTC / cosine:");
+        for (j = 0; j < 6; ++j) {
+            eon_ctx c;
+            double v1, v2;
+            c.wo = mft_dir(rad(tv[j]), 0.0); c.sigma = 1.0; c.rho = 1.0;
+            c.what = 3; v1 = hemi_int(eon_g, &c, rad(tv[j]), 4) - 1.0;
+            c.what = 4; v2 = hemi_int(eon_g, &c, rad(tv[j]), 4) - 1.0;
+            printf(" %g deg %.3g/%.3g;", tv[j], v1, v2);
+            if (v1 / v2 > worse) worse = v1 / v2;
+        }
+        printf("\n");
+        MFT_CHECK(worse < 1.0, "eon sampling: lower variance than cosine sampling at sigma 1, every view");
+    }
+}
+
 void test_material_lobes(void)
 {
     test_f82();
+    test_eon_eval();
+    test_eon_sample();
 }
