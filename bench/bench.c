@@ -1118,6 +1118,33 @@ static double b_eon_albedo(const mf_ndf *d) { (void)d; LOOP(mf_eon_albedo(g_wo[i
 static double b_schlick(const mf_ndf *d) { (void)d; LOOP(plain_schlick(g_wo[i].z, g_u1[i])); }
 static double b_f82(const mf_ndf *d) { (void)d; LOOP(mf_fresnel_f82(g_wo[i].z, g_u1[i], g_u2[i])); }
 static double b_f82_avg(const mf_ndf *d) { (void)d; LOOP(mf_fresnel_f82_average(g_u1[i], MF_R(0.25) * g_u2[i])); }
+static double b_tf_spectral3(const mf_ndf *d)
+{
+    /* the naive RGB: the exact reflectance at three wavelengths */
+    static const mf_real lam[3] = { MF_R(647.4), MF_R(544.0), MF_R(442.6) };
+    (void)d;
+    LOOP(mf_fresnel_thin_film(g_wo[i].z, MF_R(1.0), MF_R(1.33), MF_R(800.0) * g_u1[i], MF_R(1.0), MF_R(0.0), lam[0])
+         + mf_fresnel_thin_film(g_wo[i].z, MF_R(1.0), MF_R(1.33), MF_R(800.0) * g_u1[i], MF_R(1.0), MF_R(0.0), lam[1])
+         + mf_fresnel_thin_film(g_wo[i].z, MF_R(1.0), MF_R(1.33), MF_R(800.0) * g_u1[i], MF_R(1.0), MF_R(0.0), lam[2]));
+}
+static mf_real tf_rgb_sum(mf_real c, mf_real d, const mf_real *eb, const mf_real *kb)
+{
+    mf_real rgb[3];
+    mf_fresnel_thin_film_rgb(c, MF_R(1.0), MF_R(1.33), d, eb, kb, rgb);
+    return rgb[0] + rgb[1] + rgb[2];
+}
+static double b_tf_rgb(const mf_ndf *d)
+{
+    static const mf_real eb[3] = { MF_R(1.0), MF_R(1.0), MF_R(1.0) }, kb[3] = { MF_R(0.0), MF_R(0.0), MF_R(0.0) };
+    (void)d;
+    LOOP(tf_rgb_sum(g_wo[i].z, MF_R(800.0) * g_u1[i], eb, kb));
+}
+static double b_tf_rgb_metal(const mf_ndf *d)
+{
+    static const mf_real eb[3] = { MF_R(0.18), MF_R(0.42), MF_R(1.37) }, kb[3] = { MF_R(3.4), MF_R(2.35), MF_R(1.77) };
+    (void)d;
+    LOOP(tf_rgb_sum(g_wo[i].z, MF_R(800.0) * g_u1[i], eb, kb));
+}
 static void bench_lobes(void)
 {
     double tb, to;
@@ -1132,4 +1159,7 @@ static void bench_lobes(void)
     run_pair(b_schlick, b_f82, NULL, &tb, &to);
     printf("bench fresnel_f82 %.2f schlick=%.2f ratio=%.2f\n", to, tb, to / tb);
     printf("bench fresnel_f82_average %.2f\n", run(b_f82_avg, NULL));
+    run_pair(b_tf_spectral3, b_tf_rgb, NULL, &tb, &to);
+    printf("bench thin_film_rgb_soap %.1f three_wavelengths=%.1f ratio=%.2f\n", to, tb, to / tb);
+    printf("bench thin_film_rgb_oxide_on_gold %.1f\n", run(b_tf_rgb_metal, NULL));
 }
