@@ -11,7 +11,7 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
             tests/test_brdf.c tests/test_ltmd.c tests/test_ltc.c tests/test_ltc_shapes.c tests/test_leadr.c \
             tests/test_tabulated.c tests/test_ibm.c tests/test_microsurface.c \
             tests/test_materials.c tests/test_dielectric.c tests/test_energy.c tests/test_robust.c tests/test_samplers.c tests/test_float.c tests/test_tu2.c \
-            tests/test_fuzzfound.c
+            tests/test_fuzzfound.c tests/test_lobes.c
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 # OpenEXR is optional (apt-get install libopenexr-dev): found through

@@ -876,6 +876,7 @@ static const char *const core_sections[] = { "ggx", "kinds", "transformed", "lea
 #define CORE_SECTIONS ((int)(sizeof core_sections / sizeof *core_sections))
 #define CORE_ALL ((1 << CORE_SECTIONS) - 1)
 static void bench_core(const struct bench_kind *ks, int sections);
+static void bench_lobes(void);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
 static void bench_ltc_shapes(void);
@@ -1061,6 +1062,10 @@ int main(int argc, char **argv)
         bench_record();
         return 0;
     }
+    if (argc > 1 && !strcmp(argv[1], "lobes")) {
+        bench_lobes();
+        return 0;
+    }
     if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
         int sec = 0;
         for (i = 0; i < CORE_SECTIONS; ++i)
@@ -1079,6 +1084,7 @@ int main(int argc, char **argv)
     bench_tabulated();
     bench_ibm();
     bench_microsurface();
+    bench_lobes();
     return g_sink == g_sink ? 0 : 1;
 }
 
@@ -1215,4 +1221,76 @@ static void bench_core(const struct bench_kind *ks, int sections)
         g_sink += s;
     }
     if (sections & 16) bench_ltc();   /* ltc: lookup, polygons, fitting */
+}
+
+/* ---- the lobes of a whole material (issue 42): each against the simplest
+ * peer form of its role (ratio = ours / that form) ---- */
+static mf_real plain_lambert(mf_vec3 wo, mf_vec3 wi, mf_real rho)
+{
+    return wo.z > MF_R(0.0) && wi.z > MF_R(0.0) ? rho * MF_INV_PI : MF_R(0.0);
+}
+static mf_real plain_schlick(mf_real c, mf_real f0)
+{
+    mf_real m = MF_R(1.0) - c, m2 = m * m;
+    return f0 + (MF_R(1.0) - f0) * m2 * m2 * m;
+}
+static double b_lambert(const mf_ndf *d) { (void)d; LOOP(plain_lambert(g_wo[i], g_wi[i], g_u1[i])); }
+static double b_eon(const mf_ndf *d) { (void)d; LOOP(mf_eon_brdf(g_wo[i], g_wi[i], g_u1[i], g_u2[i])); }
+static double b_cos_sample(const mf_ndf *d)
+{
+    (void)d;
+    LOOP(mf__sample_cosine(g_u1[i], g_u2[i]).z * g_u1[i]);   /* weight rho: the Lambert record */
+}
+static double b_eon_sample(const mf_ndf *d) { (void)d; LOOP(mf_eon_sample(g_wo[i], g_u1[i], MF_R(0.6), g_u1[i], g_u2[i]).weight); }
+static double b_cos_pdf(const mf_ndf *d) { (void)d; LOOP(g_wi[i].z > MF_R(0.0) ? g_wi[i].z * MF_INV_PI : MF_R(0.0)); }
+static double b_eon_pdf(const mf_ndf *d) { (void)d; LOOP(mf_eon_pdf(g_wo[i], g_wi[i], g_u1[i])); }
+static double b_eon_albedo_fast(const mf_ndf *d) { (void)d; LOOP(mf_eon_albedo_fast(g_wo[i].z, g_u1[i], g_u2[i])); }
+static double b_eon_albedo(const mf_ndf *d) { (void)d; LOOP(mf_eon_albedo(g_wo[i].z, g_u1[i], g_u2[i])); }
+static double b_schlick(const mf_ndf *d) { (void)d; LOOP(plain_schlick(g_wo[i].z, g_u1[i])); }
+static double b_f82(const mf_ndf *d) { (void)d; LOOP(mf_fresnel_f82(g_wo[i].z, g_u1[i], g_u2[i])); }
+static double b_f82_avg(const mf_ndf *d) { (void)d; LOOP(mf_fresnel_f82_average(g_u1[i], MF_R(0.25) * g_u2[i])); }
+static double b_tf_spectral3(const mf_ndf *d)
+{
+    /* the naive RGB: the exact reflectance at three wavelengths */
+    static const mf_real lam[3] = { MF_R(647.4), MF_R(544.0), MF_R(442.6) };
+    (void)d;
+    LOOP(mf_fresnel_thin_film(g_wo[i].z, MF_R(1.0), MF_R(1.33), MF_R(800.0) * g_u1[i], MF_R(1.0), MF_R(0.0), lam[0])
+         + mf_fresnel_thin_film(g_wo[i].z, MF_R(1.0), MF_R(1.33), MF_R(800.0) * g_u1[i], MF_R(1.0), MF_R(0.0), lam[1])
+         + mf_fresnel_thin_film(g_wo[i].z, MF_R(1.0), MF_R(1.33), MF_R(800.0) * g_u1[i], MF_R(1.0), MF_R(0.0), lam[2]));
+}
+static mf_real tf_rgb_sum(mf_real c, mf_real d, const mf_real *eb, const mf_real *kb)
+{
+    mf_real rgb[3];
+    mf_fresnel_thin_film_rgb(c, MF_R(1.0), MF_R(1.33), d, eb, kb, rgb);
+    return rgb[0] + rgb[1] + rgb[2];
+}
+static double b_tf_rgb(const mf_ndf *d)
+{
+    static const mf_real eb[3] = { MF_R(1.0), MF_R(1.0), MF_R(1.0) }, kb[3] = { MF_R(0.0), MF_R(0.0), MF_R(0.0) };
+    (void)d;
+    LOOP(tf_rgb_sum(g_wo[i].z, MF_R(800.0) * g_u1[i], eb, kb));
+}
+static double b_tf_rgb_metal(const mf_ndf *d)
+{
+    static const mf_real eb[3] = { MF_R(0.18), MF_R(0.42), MF_R(1.37) }, kb[3] = { MF_R(3.4), MF_R(2.35), MF_R(1.77) };
+    (void)d;
+    LOOP(tf_rgb_sum(g_wo[i].z, MF_R(800.0) * g_u1[i], eb, kb));
+}
+static void bench_lobes(void)
+{
+    double tb, to;
+    run_pair(b_lambert, b_eon, NULL, &tb, &to);
+    printf("bench eon_brdf %.2f lambert=%.2f ratio=%.2f\n", to, tb, to / tb);
+    run_pair(b_cos_sample, b_eon_sample, NULL, &tb, &to);
+    printf("bench eon_sample %.2f cosine=%.2f ratio=%.2f\n", to, tb, to / tb);
+    run_pair(b_cos_pdf, b_eon_pdf, NULL, &tb, &to);
+    printf("bench eon_pdf %.2f cosine=%.2f ratio=%.2f\n", to, tb, to / tb);
+    run_pair(b_eon_albedo_fast, b_eon_albedo, NULL, &tb, &to);
+    printf("bench eon_albedo %.2f fast=%.2f ratio=%.2f\n", to, tb, to / tb);
+    run_pair(b_schlick, b_f82, NULL, &tb, &to);
+    printf("bench fresnel_f82 %.2f schlick=%.2f ratio=%.2f\n", to, tb, to / tb);
+    printf("bench fresnel_f82_average %.2f\n", run(b_f82_avg, NULL));
+    run_pair(b_tf_spectral3, b_tf_rgb, NULL, &tb, &to);
+    printf("bench thin_film_rgb_soap %.1f three_wavelengths=%.1f ratio=%.2f\n", to, tb, to / tb);
+    printf("bench thin_film_rgb_oxide_on_gold %.1f\n", run(b_tf_rgb_metal, NULL));
 }
