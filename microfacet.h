@@ -404,12 +404,17 @@ typedef float mf_real;
  * and Lambda, the generic front ends, BRDF and dielectric evaluation, the LTC
  * edge term). At -O3 and in a translation unit holding the whole library,
  * gcc's unit-growth limits otherwise move some of them out of line and the
- * callers get up to 2x slower. A user-defined MF_INLINE is kept as it is. */
+ * callers get up to 2x slower. Unoptimized builds (gcc and clang without
+ * __OPTIMIZE__) get plain MF_INLINE: forcing there only copies each front
+ * end's whole dispatch into every caller, unfolded, and hides the calls from
+ * debuggers. A user-defined MF_INLINE is kept as it is. */
 #ifndef MF_FORCE_INLINE
 #if !defined(MF__INLINE_DEFAULT)
 #define MF_FORCE_INLINE MF_INLINE
 #elif defined(__CUDACC__)
 #define MF_FORCE_INLINE static __forceinline__ MF_HD
+#elif (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
+#define MF_FORCE_INLINE MF_INLINE
 #elif defined(__GNUC__) || defined(__clang__)
 #define MF_FORCE_INLINE static inline __attribute__((always_inline))
 #elif defined(_MSC_VER)
@@ -2890,20 +2895,19 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 }
 
 /* the per-edge and per-vertex helpers must inline into the polygon loops;
- * the rare ones stay out of line */
+ * the rare ones stay out of line when optimizing. Unoptimized, they are plain
+ * static inline: gcc emits every static non-inline function at -O0, used or
+ * not, while an unused static inline one costs nothing (and nothing is
+ * inlined at -O0 anyway). */
 #define MF__LTC_HOT MF_FORCE_INLINE
 #if defined(__CUDACC__)
 #define MF__LTC_RARE static __noinline__ MF_HD
-#elif defined(__GNUC__) || defined(__clang__)
-#define MF__LTC_RARE static __attribute__((noinline, cold, unused))
-#else
-#define MF__LTC_RARE MF_INLINE
-#endif
-#if defined(__CUDACC__)
 #define MF__LTC_NOINLINE static __noinline__ MF_HD
-#elif defined(__GNUC__) || defined(__clang__)
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__)
+#define MF__LTC_RARE static __attribute__((noinline, cold, unused))
 #define MF__LTC_NOINLINE static __attribute__((noinline, unused))
 #else
+#define MF__LTC_RARE MF_INLINE
 #define MF__LTC_NOINLINE MF_INLINE
 #endif
 

@@ -170,12 +170,17 @@ typedef float mf_real;
  * and Lambda, the generic front ends, BRDF and dielectric evaluation, the LTC
  * edge term). At -O3 and in a translation unit holding the whole library,
  * gcc's unit-growth limits otherwise move some of them out of line and the
- * callers get up to 2x slower. A user-defined MF_INLINE is kept as it is. */
+ * callers get up to 2x slower. Unoptimized builds (gcc and clang without
+ * __OPTIMIZE__) get plain MF_INLINE: forcing there only copies each front
+ * end's whole dispatch into every caller, unfolded, and hides the calls from
+ * debuggers. A user-defined MF_INLINE is kept as it is. */
 #ifndef MF_FORCE_INLINE
 #if !defined(MF__INLINE_DEFAULT)
 #define MF_FORCE_INLINE MF_INLINE
 #elif defined(__CUDACC__)
 #define MF_FORCE_INLINE static __forceinline__ MF_HD
+#elif (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
+#define MF_FORCE_INLINE MF_INLINE
 #elif defined(__GNUC__) || defined(__clang__)
 #define MF_FORCE_INLINE static inline __attribute__((always_inline))
 #elif defined(_MSC_VER)
