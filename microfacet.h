@@ -13,7 +13,10 @@
  * QUICK START
  *
  *     #include "microfacet.h"     // in every file that uses it
- *     // in exactly one C or C++ file, before the include:
+ *     // in exactly one C or C++ file per precision the program uses, before
+ *     // the include, even if it calls only inline functions (without it the
+ *     // link fails on mf_precision_is_float_... or mf_precision_is_double_...,
+ *     // as it does when files disagree on MF_USE_DOUBLE):
  *     #define MICROFACET_IMPLEMENTATION
  *
  *     mf_ndf  d   = mf_ggx(0.3f, 0.1f);                    // anisotropic GGX
@@ -133,6 +136,8 @@
  *
  *   MF_USE_DOUBLE           mf_real is double (default float)
  *   MICROFACET_IMPLEMENTATION  emit the non-inline functions in this file
+ *                           (one file per precision of every program; see
+ *                           the precision guard in section 1)
  *   MFDEF                   storage of non-inline functions (default extern)
  *   MF_MALLOC(n) / MF_FREE(p)  allocator pair (default malloc/free); define
  *                           both or neither (one alone is an #error)
@@ -624,6 +629,54 @@ typedef float mf_real;
 #define mf_dielectric_bsdf_ms MF__SYM(mf_dielectric_bsdf_ms)
 #define mf_dielectric_ms_sample MF__SYM(mf_dielectric_ms_sample)
 #define mf_dielectric_ms_pdf MF__SYM(mf_dielectric_ms_pdf)
+
+/* Precision guard: every file that includes the header references a symbol
+ * named after its precision, mf_precision_is_float_... or
+ * mf_precision_is_double_..., that only an implementation of that precision
+ * defines. A program whose files disagree on MF_USE_DOUBLE, or that lacks an
+ * implementation file of a precision it uses, then fails to link naming the
+ * precision, even when it calls only inline functions (an mf_ndf made in a
+ * float file and read in a double one would otherwise be misread silently).
+ * So every program defines MICROFACET_IMPLEMENTATION in one file per
+ * precision it uses, as it had to already for anything but the kind-specific
+ * functions: the generic front ends call the cold paths of the rarer kinds,
+ * which only an optimizer that sees the kind folds away. The reference is a
+ * static pointer kept by the attribute used (gcc, clang; on ELF also retain,
+ * where the compiler has it, so that --gc-sections keeps it too) or a /include
+ * linker directive (MSVC); other compilers check nothing. */
+#ifdef MF_USE_DOUBLE
+#define MF__PRECISION_GUARD mf_precision_is_double_define_MICROFACET_IMPLEMENTATION_in_a_double_file
+#else
+#define MF__PRECISION_GUARD mf_precision_is_float_define_MICROFACET_IMPLEMENTATION_in_a_float_file
+#endif
+#ifdef __cplusplus
+extern "C" {
+#endif
+extern const int MF__PRECISION_GUARD;
+#ifdef __cplusplus
+}
+#endif
+#if !defined(__CUDACC_RTC__)
+#if defined(__GNUC__) || defined(__clang__)
+#if defined(__ELF__) && !defined(__CUDACC__) && defined(__has_attribute)
+#if __has_attribute(retain)
+#define MF__KEEP __attribute__((used, retain))
+#endif
+#endif
+#ifndef MF__KEEP
+#define MF__KEEP __attribute__((used))
+#endif
+static const int *const mf__precision_ref MF__KEEP = &MF__PRECISION_GUARD;
+#elif defined(_MSC_VER)
+#define MF__STR2(x) #x
+#define MF__STR(x) MF__STR2(x)
+#if defined(_M_IX86)
+#pragma comment(linker, "/include:_" MF__STR(MF__PRECISION_GUARD))
+#else
+#pragma comment(linker, "/include:" MF__STR(MF__PRECISION_GUARD))
+#endif
+#endif
+#endif
 
 /* Result codes of builders. */
 typedef enum mf_result {
@@ -7613,6 +7666,9 @@ MF_COLD mf_vec3 mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* the precision guard's one definition (see MF__PRECISION_GUARD above) */
+const int MF__PRECISION_GUARD = 1;
 
 MFDEF const char *mf_result_string(mf_result r)
 {
