@@ -42,14 +42,18 @@ all: test
 SRC_MODULES := $(sort $(wildcard src/*.h))
 header:
 	@sh tools/amalgamate.sh > microfacet.h.tmp && mv microfacet.h.tmp microfacet.h
-	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/"
+	@sh tools/amalgamate.sh --readme > README.md.tmp && mv README.md.tmp README.md
+	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/ (and README.md's API index)"
 # make test runs this: module opt-outs, the allocator pair, precision mixing
 config-check: | $(BUILD)
 	@sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
-# make test runs this: the committed header must be what the generator makes
+# make test runs this: the committed header and README's API index must be
+# what the generator makes
 header-check:
 	@sh tools/amalgamate.sh | cmp -s - microfacet.h || \
 	  { echo "microfacet.h differs from src/: edit src/, run 'make header', commit both"; exit 1; }
+	@sh tools/amalgamate.sh --readme | cmp -s - README.md || \
+	  { echo "README.md's API index differs from src/: run 'make header', commit both"; exit 1; }
 
 # the built-in LTC table modules, refitted (GGX with its refinement on
 # polygons 259 s CPU, Beckmann 264 s here; ltc-table-ggx and ltc-table-beckmann
