@@ -33,7 +33,7 @@ endif
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
-        $(foreach s,header api warnings config package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+        $(foreach s,header api warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
@@ -42,14 +42,21 @@ all: test
 SRC_MODULES := $(sort $(wildcard src/*.h))
 header:
 	@sh tools/amalgamate.sh > microfacet.h.tmp && mv microfacet.h.tmp microfacet.h
-	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/"
+	@sh tools/amalgamate.sh --readme > README.md.tmp && mv README.md.tmp README.md
+	@mkdir -p docs && sh tools/amalgamate.sh --api > docs/API.md.tmp && mv docs/API.md.tmp docs/API.md
+	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/ (and the API index: README.md, docs/API.md)"
 # make test runs this: module opt-outs, the allocator pair, precision mixing
 config-check: | $(BUILD)
 	@sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
-# make test runs this: the committed header must be what the generator makes
+# make test runs this: the committed header and README's API index must be
+# what the generator makes
 header-check:
 	@sh tools/amalgamate.sh | cmp -s - microfacet.h || \
 	  { echo "microfacet.h differs from src/: edit src/, run 'make header', commit both"; exit 1; }
+	@sh tools/amalgamate.sh --readme | cmp -s - README.md || \
+	  { echo "README.md's API index differs from src/: run 'make header', commit both"; exit 1; }
+	@sh tools/amalgamate.sh --api | cmp -s - docs/API.md || \
+	  { echo "docs/API.md differs from src/: run 'make header', commit both"; exit 1; }
 
 # the built-in LTC table modules, refitted (GGX with its refinement on
 # polygons 259 s CPU, Beckmann 264 s here; ltc-table-ggx and ltc-table-beckmann
@@ -140,7 +147,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header api c_double c_float fuzz warnings config fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
+TEST_STEPS := header api c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -189,6 +196,8 @@ step-package: | $(RES)
 	@$(RUN_STEP) package $(RES)/package check sh tests/package_check.sh "$(CC)" $(BUILD)
 step-config: | $(RES)
 	@$(RUN_STEP) config $(RES)/config check sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
+step-include_cost: | $(RES)
+	@$(RUN_STEP) include_cost $(RES)/include_cost check sh tests/include_cost.sh "$(CC)" $(BUILD)
 # (phony targets take no pattern rules: one explicit rule per configuration)
 define TEST_RUN
 step-$(1): $(BUILD)/test_$(1) | $(RES)

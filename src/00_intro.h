@@ -4,7 +4,10 @@
  * QUICK START
  *
  *     #include "microfacet.h"     // in every file that uses it
- *     // in exactly one C or C++ file, before the include:
+ *     // in exactly one C or C++ file per precision the program uses, before
+ *     // the include, even if it calls only inline functions (without it the
+ *     // link fails on mf_precision_is_float_... or mf_precision_is_double_...,
+ *     // as it does when files disagree on MF_USE_DOUBLE):
  *     #define MICROFACET_IMPLEMENTATION
  *
  *     mf_ndf    d  = mf_ggx(0.3f, 0.1f);                    // anisotropic GGX
@@ -128,6 +131,8 @@
  *
  *   MF_USE_DOUBLE           mf_real is double (default float)
  *   MICROFACET_IMPLEMENTATION  emit the non-inline functions in this file
+ *                           (one file per precision of every program; see
+ *                           the precision guard in section 1)
  *   MFDEF                   storage of non-inline functions (default extern)
  *   MF_MALLOC(n) / MF_FREE(p)  allocator pair (default malloc/free); define
  *                           both or neither (one alone is an #error)

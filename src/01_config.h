@@ -172,12 +172,17 @@ typedef float mf_real;
  * and Lambda, the generic front ends, BRDF and dielectric evaluation, the LTC
  * edge term). At -O3 and in a translation unit holding the whole library,
  * gcc's unit-growth limits otherwise move some of them out of line and the
- * callers get up to 2x slower. A user-defined MF_INLINE is kept as it is. */
+ * callers get up to 2x slower. Unoptimized builds (gcc and clang without
+ * __OPTIMIZE__) get plain MF_INLINE: forcing there only copies each front
+ * end's whole dispatch into every caller, unfolded, and hides the calls from
+ * debuggers. A user-defined MF_INLINE is kept as it is. */
 #ifndef MF_FORCE_INLINE
 #if !defined(MF__INLINE_DEFAULT)
 #define MF_FORCE_INLINE MF_INLINE
 #elif defined(__CUDACC__)
 #define MF_FORCE_INLINE static __forceinline__ MF_HD
+#elif (defined(__GNUC__) || defined(__clang__)) && !defined(__OPTIMIZE__)
+#define MF_FORCE_INLINE MF_INLINE
 #elif defined(__GNUC__) || defined(__clang__)
 #define MF_FORCE_INLINE static inline __attribute__((always_inline))
 #elif defined(_MSC_VER)
@@ -290,6 +295,54 @@ typedef float mf_real;
 #endif
 /* @symbols */
 
+/* Precision guard: every file that includes the header references a symbol
+ * named after its precision, mf_precision_is_float_... or
+ * mf_precision_is_double_..., that only an implementation of that precision
+ * defines. A program whose files disagree on MF_USE_DOUBLE, or that lacks an
+ * implementation file of a precision it uses, then fails to link naming the
+ * precision, even when it calls only inline functions (an mf_ndf made in a
+ * float file and read in a double one would otherwise be misread silently).
+ * So every program defines MICROFACET_IMPLEMENTATION in one file per
+ * precision it uses, as it had to already for anything but the kind-specific
+ * functions: the generic front ends call the cold paths of the rarer kinds,
+ * which only an optimizer that sees the kind folds away. The reference is a
+ * static pointer kept by the attribute used (gcc, clang; on ELF also retain,
+ * where the compiler has it, so that --gc-sections keeps it too) or a /include
+ * linker directive (MSVC); other compilers check nothing. */
+#ifdef MF_USE_DOUBLE
+#define MF__PRECISION_GUARD mf_precision_is_double_define_MICROFACET_IMPLEMENTATION_in_a_double_file
+#else
+#define MF__PRECISION_GUARD mf_precision_is_float_define_MICROFACET_IMPLEMENTATION_in_a_float_file
+#endif
+#ifdef __cplusplus
+extern "C" {
+#endif
+extern const int MF__PRECISION_GUARD;
+#ifdef __cplusplus
+}
+#endif
+#if !defined(__CUDACC_RTC__)
+#if defined(__GNUC__) || defined(__clang__)
+#if defined(__ELF__) && !defined(__CUDACC__) && defined(__has_attribute)
+#if __has_attribute(retain)
+#define MF__KEEP __attribute__((used, retain))
+#endif
+#endif
+#ifndef MF__KEEP
+#define MF__KEEP __attribute__((used))
+#endif
+static const int *const mf__precision_ref MF__KEEP = &MF__PRECISION_GUARD;
+#elif defined(_MSC_VER)
+#define MF__STR2(x) #x
+#define MF__STR(x) MF__STR2(x)
+#if defined(_M_IX86)
+#pragma comment(linker, "/include:_" MF__STR(MF__PRECISION_GUARD))
+#else
+#pragma comment(linker, "/include:" MF__STR(MF__PRECISION_GUARD))
+#endif
+#endif
+#endif
+
 /* Result codes of builders. */
 typedef enum mf_result {
     MF_SUCCESS = 0,
@@ -302,6 +355,9 @@ typedef enum mf_result {
 /* A short English name of a result code. */
 MFDEF const char *mf_result_string(mf_result r);
 /* @impl */
+/* the precision guard's one definition (see MF__PRECISION_GUARD above) */
+const int MF__PRECISION_GUARD = 1;
+
 MFDEF const char *mf_result_string(mf_result r)
 {
     switch (r) {

@@ -125,20 +125,19 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 }
 
 /* the per-edge and per-vertex helpers must inline into the polygon loops;
- * the rare ones stay out of line */
+ * the rare ones stay out of line when optimizing. Unoptimized, they are plain
+ * static inline: gcc emits every static non-inline function at -O0, used or
+ * not, while an unused static inline one costs nothing (and nothing is
+ * inlined at -O0 anyway). */
 #define MF__LTC_HOT MF_FORCE_INLINE
 #if defined(__CUDACC__)
 #define MF__LTC_RARE static __noinline__ MF_HD
-#elif defined(__GNUC__) || defined(__clang__)
-#define MF__LTC_RARE static __attribute__((noinline, cold, unused))
-#else
-#define MF__LTC_RARE MF_INLINE
-#endif
-#if defined(__CUDACC__)
 #define MF__LTC_NOINLINE static __noinline__ MF_HD
-#elif defined(__GNUC__) || defined(__clang__)
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__OPTIMIZE__)
+#define MF__LTC_RARE static __attribute__((noinline, cold, unused))
 #define MF__LTC_NOINLINE static __attribute__((noinline, unused))
 #else
+#define MF__LTC_RARE MF_INLINE
 #define MF__LTC_NOINLINE MF_INLINE
 #endif
 

@@ -25,9 +25,37 @@
 # are. Every function declared with MFDEF or MF_COLD in a module gets a
 # precision-tagged symbol name (see MF__SYM in 01_config.h), listed where
 # 01_config.h holds the line "/* @symbols */". Needs only sh and awk.
+#
+#   sh tools/amalgamate.sh --readme > README.md.tmp   (also run by `make header`)
+#   sh tools/amalgamate.sh --api > docs/API.md          (likewise)
+#
+# --readme prints README.md with the block between its lines
+# "<!-- api-index:begin -->" and "<!-- api-index:end -->" replaced by the
+# compact API index (one line per module naming its functions); --api prints
+# docs/API.md, one line per public function with its signature, grouped by
+# module. Both come from tools/api_index.awk on the same module sources;
+# `make test` fails when the committed files differ.
 set -e
 cd "$(dirname "$0")/.."
 files=$(ls src/[0-9]*.h | LC_ALL=C sort)
+if [ "${1:-}" = --api ]; then
+    awk -f tools/api_index.awk $files
+    exit
+fi
+if [ "${1:-}" = --readme ]; then
+    awk -v compact=1 -f tools/api_index.awk $files | awk '
+    NR == FNR { idx = idx $0 "\n"; next }
+    $0 == "<!-- api-index:begin -->" { printf "%s\n%s", $0, idx; inside = 1; begun++; next }
+    $0 == "<!-- api-index:end -->" { inside = 0; ended++ }
+    !inside { print }
+    END {
+        if (begun != 1 || ended != 1) {
+            print "amalgamate.sh: README.md needs one <!-- api-index:begin --> line and one <!-- api-index:end --> line after it" > "/dev/stderr"
+            exit 1
+        }
+    }' - README.md
+    exit
+fi
 awk '
 function emit(s) { printf "%s", s }
 function close_guard() { if (guard != "") for (p in open_) if (open_[p]) { buf[p] = buf[p] "#endif /* " guard " */\n"; open_[p] = 0 } }
