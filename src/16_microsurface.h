@@ -1128,7 +1128,7 @@ MFDEF mf_result mf_gonio_measure(mf_gonio *g, const mf_real *heights, int size, 
         o[1] = mf__pcg_u01(&rng) * (double)n;
         o[2] = zmax;
         while (!done) {
-            double t, sl[2];
+            double t = 0.0, sl[2] = { 0.0, 0.0 };
             long facet;
             int res;
             d[0] = (double)dir.x; d[1] = (double)dir.y; d[2] = (double)dir.z;
