@@ -4982,11 +4982,13 @@ MF_DEPRECATED("use mf_transform_is_valid") MF_INLINE int mf_transform_valid(mf_m
 {
     return mf_transform_is_valid(M);
 }
+#ifndef MF_NO_LEADR
 /* 0.3: 1 when the moments were valid as given */
 MF_DEPRECATED("use mf_leadr_to_covariance (mf_result)") MF_INLINE int mf_leadr_covariance(mf_leadr a, mf_real *var_x, mf_real *var_y, mf_real *cov_xy)
 {
     return mf_leadr_to_covariance(a, var_x, var_y, cov_xy) == MF_SUCCESS;
 }
+#endif
 #ifndef MF_NO_IBM
 MF_DEPRECATED("use mf_ibm_brdf_and_pdf") MF_INLINE mf_real mf_ibm_brdf_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf)
 {

@@ -24,11 +24,11 @@ for how in find_package subdirectory fetchcontent; do
   "$W/$how/consumer" || fail "$how: the consumer fails"
 done
 # another minor version must not be accepted
-sed 's/find_package(microfacet 0.3 REQUIRED)/find_package(microfacet 0.2 REQUIRED)/' \
+sed 's/find_package(microfacet 0.4 REQUIRED)/find_package(microfacet 0.3 REQUIRED)/' \
   "$root/tests/package/CMakeLists.txt" > "$W/CMakeLists.txt"
 cp "$root/tests/package/consumer.c" "$W/"
 cmake -S "$W" -B "$W/wrong" -DMF_HOW=find_package -DCMAKE_PREFIX_PATH="$W/prefix" \
-  > "$W/log.txt" 2>&1 && fail "find_package(microfacet 0.2) accepted version 0.3"
+  > "$W/log.txt" 2>&1 && fail "find_package(microfacet 0.3) accepted version 0.4"
 if command -v pkg-config >/dev/null 2>&1; then
   make -s -j1 install PREFIX="$W/makeprefix" > "$W/log.txt" 2>&1 || { cat "$W/log.txt"; fail "make install"; }
   [ -f "$W/makeprefix/share/licenses/microfacet/LICENSE" ] || fail "make install: no LICENSE"

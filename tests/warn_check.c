@@ -234,6 +234,15 @@ int main(void)
         }
     }
     { mf_basis fr_ = mf_basis_from_normal(wo); t = fr_.t; b = fr_.b; }
+    {   /* the lobes of a whole material */
+        mf_real eb[3] = { MF_R(0.2), MF_R(0.9), MF_R(1.5) }, kb[3] = { MF_R(3.0), MF_R(2.5), MF_R(1.9) }, rgb[3];
+        s += mf_eon_brdf(wo, wi, MF_R(0.8), MF_R(0.5)) + mf_eon_pdf(wo, wi, MF_R(0.5)) + mf_eon_sample(wo, MF_R(0.8), MF_R(0.5), MF_R(0.3), MF_R(0.6)).weight;
+        s += mf_eon_albedo(wo.z, MF_R(0.8), MF_R(0.5)) + mf_eon_albedo_fast(wo.z, MF_R(0.8), MF_R(0.5)) + mf_eon_albedo_average(MF_R(0.8), MF_R(0.5));
+        s += mf_fresnel_f82(wo.z, MF_R(0.9), MF_R(0.8)) + mf_fresnel_f82_average(MF_R(0.9), MF_R(0.8));
+        s += mf_fresnel_thin_film(wo.z, MF_R(1.0), MF_R(1.33), MF_R(300.0), MF_R(1.5), MF_R(0.0), MF_R(550.0));
+        mf_fresnel_thin_film_rgb(wo.z, MF_R(1.0), MF_R(1.33), MF_R(300.0), eb, kb, rgb);
+        s += rgb[0] + rgb[1] + rgb[2];
+    }
 #ifndef MF_NO_DEPRECATED
     /* the deprecated 0.3 names still compile and run (warnings off here only) */
 #if defined(__GNUC__) || defined(__clang__)
