@@ -171,8 +171,8 @@ typedef float mf_real;
 /* MF_FORCE_INLINE: the small hot helpers (vector algebra, GGX and Beckmann D
  * and Lambda, the generic front ends, BRDF and dielectric evaluation, the LTC
  * edge term). At -O3 and in a translation unit holding the whole library,
- * gcc's unit-growth limits otherwise move some of them out of line and the
- * callers get up to 2x slower. Unoptimized builds (gcc and clang without
+ * gcc's unit-growth limits otherwise move some of them out of line, which
+ * costs their callers more than the call saves (docs/PERFORMANCE.md). Unoptimized builds (gcc and clang without
  * __OPTIMIZE__) get plain MF_INLINE: forcing there only copies each front
  * end's whole dispatch into every caller, unfolded, and hides the calls from
  * debuggers. A user-defined MF_INLINE is kept as it is. */
