@@ -357,8 +357,8 @@ typedef float mf_real;
 /* MF_FORCE_INLINE: the small hot helpers (vector algebra, GGX and Beckmann D
  * and Lambda, the generic front ends, BRDF and dielectric evaluation, the LTC
  * edge term). At -O3 and in a translation unit holding the whole library,
- * gcc's unit-growth limits otherwise move some of them out of line and the
- * callers get up to 2x slower. Unoptimized builds (gcc and clang without
+ * gcc's unit-growth limits otherwise move some of them out of line, which
+ * costs their callers more than the call saves (docs/PERFORMANCE.md). Unoptimized builds (gcc and clang without
  * __OPTIMIZE__) get plain MF_INLINE: forcing there only copies each front
  * end's whole dispatch into every caller, unfolded, and hides the calls from
  * debuggers. A user-defined MF_INLINE is kept as it is. */
@@ -3915,7 +3915,7 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  * bit, so no pointers are stored at all. */
 #define MF_IBM_MAGIC 0x4d464942u          /* "BIFM" in little-endian bytes */
 #define MF_IBM_VERSION 2u                 /* 1 (0.2.0): n and all 2^k + 1 boundaries stored, wider fields */
-#define MF_IBM_LEAF 24                    /* leaf size L of Sec. 5.4.4 (10 there; 24 measured faster here) */
+#define MF_IBM_LEAF 24                    /* leaf size L of Sec. 5.4.4 (10 there; tuned: docs/PERFORMANCE.md) */
 #define MF_IBM_TREE_MIN 20                /* bins this large store the top of their kd-tree */
 #define MF_IBM_MAX_RES 1024               /* bins per axis at most (index memory b^2) */
 #define MF_IBM_MAX_RADIUS 8               /* neighbourhood radius in bins at most */
@@ -3937,18 +3937,15 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
 #ifndef MF__IBM_SPARSE_BITS
 #define MF__IBM_SPARSE_BITS 3
 #endif
-/* leaf size of a traversal for one bin: its leaves' texels cost more than
- * the nodes that sort them in or out (callgrind, single-bin queries at 1e4
- * and 1e6 texels: 4% fewer instructions than 24 on three maps; 8 and 16
- * measured on the car-paint map, both above 12) */
+/* leaf size of a traversal for one bin: smaller than MF_IBM_LEAF, since a
+ * leaf's texels cost more than the nodes that sort them in or out (tuned:
+ * docs/PERFORMANCE.md) */
 #ifndef MF__IBM_LEAF_ONE
 #define MF__IBM_LEAF_ONE 12
 #endif
 /* bins of fewer texels skip mf__ibm_bin_near's kd-top box test: the
- * few-texel path's scan of their lists costs less than the test (callgrind,
- * 1e4-texel BRDF at alpha 0.0025: smooth map -9%, car paint -2%, flakes
- * unchanged; 21 bins and BRDF at 1e2 and 1e6 texels on the smooth and
- * car-paint maps at alpha 0.01: within 0.1%) */
+ * few-texel path's scan of their lists costs less than the test (tuned:
+ * docs/PERFORMANCE.md) */
 #define MF__IBM_NEAR_MIN 128u
 
 /* Parallelogram footprint in texture space, tiled with period 1: center
@@ -4108,7 +4105,7 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
 /* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
  * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
  * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
- * Truncated like Eq. 5.13 (see the README for the measured truncation); for
+ * Truncated like Eq. 5.13 (measured truncation: docs/ACCURACY.md); for
  * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
  * the horizon and for degenerate input. */
 MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
@@ -4468,7 +4465,7 @@ MFDEF mf_result mf_gonio_model(const mf_gonio *g, const mf_ndf *d, mf_vec3 wi, i
  * 64 x 64 entries, rows sqrt(alpha) in [0, 1], columns sqrt(mu) in [0, 1],
  * bilinear; alpha > 1 reads the last row. Anisotropic GGX and Beckmann use
  * the equivalent isotropic alpha sqrt(ax ay) (an approximation, its error is
- * measured in test_energy and stated in the README). Every other mf_ndf
+ * measured in test_energy, stated in docs/ACCURACY.md). Every other mf_ndf
  * (transformed, GTR, Student-t, tabulated, LEADR) is integrated on each call
  * by mf_albedo_integrate: exact but slow (4096 BRDF evaluations for E, about
  * 130 times more for E_avg); build an mf_albedo_table for it once instead.
@@ -6974,8 +6971,7 @@ MF_INLINE int mf__ibm_piece_make(const mf_ibm *ibm, const mf__ibm_fp *p, int row
 /* The edges' part of mf__ibm_classify: -1 when box [X0, X1] x [Y0, Y1]
  * (relative coordinates) lies outside an edge, 1 when inside them all, else
  * 0. No early exit: where n is the constant 4 (a parallelogram, the common
- * piece) the loop becomes straight code without branches (measured: 12%
- * fewer instructions for single-bin traversals than the loop with exits). */
+ * piece) the loop becomes straight code without branches. */
 MF_FORCE_INLINE int mf__ibm_classify_edges(const mf__ibm_piece *pc, int n, mf_real X0, mf_real Y0, mf_real X1, mf_real Y1)
 {
     int i, out = 0, cut = 0;
@@ -7507,8 +7503,7 @@ MF_FORCE_INLINE void mf__ibm_traverse(const mf_ibm *ibm, const mf__ibm_piece *pc
 }
 
 /* mf__ibm_traverse for a set of one bin (mf_ibm_bin_weight), compiled for
- * nb = 1: 11% fewer instructions than the general code on single-bin
- * queries (measured, car-paint map, 1e4 and 1e6 texels, alpha 0.04) */
+ * nb = 1: the loops over a node's bins become one test */
 static MF__NOINLINE MF_HD void mf__ibm_traverse_one(const mf_ibm *ibm, const mf__ibm_piece *pc, const int *bins, mf_real *acc)
 {
     mf__ibm_traverse(ibm, pc, bins, 1, acc);
@@ -7545,9 +7540,8 @@ static MF__NOINLINE MF_HD int mf__ibm_weights_few(const mf_ibm *ibm, const mf__i
     int i, j, k, x, y, made = 0, nb = 1, W = ibm->width, H = ibm->height, x0, y0, x1, y1;
     int sx[MF__IBM_FEW_PERIODS * MF__IBM_FEW_PERIODS], sy[MF__IBM_FEW_PERIODS * MF__IBM_FEW_PERIODS];
     /* a footprint of at most MF_IBM_DIRECT_TEXELS box texels: the bin map's
-     * rows cost fewer cache lines than the lists of several bins (the 21
-     * bins at 1 texel: twice the misses), so one bin only, and none where
-     * those rows are read already */
+     * rows cost fewer cache lines than the lists of several bins, so one bin
+     * only, and none where those rows are read already */
     if (p->direct && (s->n > 1 || s->mapped)) return 0;
     for (i = 0; i < s->n; ++i) {
         texels += mf__ibm_bin_info(ibm, s->bin[i], &base, &tab, &k);
@@ -7644,13 +7638,8 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
     for (i = 0; i < s->n; ++i) s->w[i] = p->full > MF_R(0.0) ? p->full * (mf_real)mf_ibm_bin_texels(ibm, s->bin[i]) : MF_R(0.0);
     if (direct && !p->few) {
         /* one bin, or wanted bins with fewer than 2 times the box's texels:
-         * their kd traversal costs less than visiting the box (measured: 2
-         * against 1, 4, 8 over the 1e2-texel queries of the IBM comparison).
-         * One bin always: over the comparison's 24 single-bin queries at 1e2
-         * texels, callgrind 1,775M instructions and 0.74M misses against
-         * 2,686M and 2.25M with the rule above, timing 0.72 against 0.77 of
-         * the plugin's (geometric means); large bins spread over the map
-         * (car paint, alpha 0.16) read slower, clustered ones much faster. */
+         * their kd traversal costs less than visiting the box (the factor 2
+         * and the one-bin rule were tuned: docs/PERFORMANCE.md) */
         if (s->n == 1) direct = 0;
         else {
             double texels = 0.0;
@@ -7659,8 +7648,8 @@ MF_INLINE void mf__ibm_weights(const mf_ibm *ibm, const mf__ibm_fp *p, mf__ibm_s
         }
     }
     if (direct && p->bx0 >= 0 && p->bx1 <= ibm->width && p->by0 >= 0 && p->by1 <= ibm->height) {
-        /* start the loads of the box's bin-map rows together (the scan
-         * would take their cache misses one after another) */
+        /* start the loads of the box's bin-map rows together, not one
+         * after another as the scan reaches them */
         int y;
         for (y = p->by0; y < p->by1; ++y) {
             size_t j = (size_t)y * (size_t)ibm->width;

@@ -256,7 +256,7 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
 /* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
  * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
  * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
- * Truncated like Eq. 5.13 (see the README for the measured truncation); for
+ * Truncated like Eq. 5.13 (measured truncation: docs/ACCURACY.md); for
  * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
  * the horizon and for degenerate input. */
 MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);

@@ -21,7 +21,7 @@
  * 64 x 64 entries, rows sqrt(alpha) in [0, 1], columns sqrt(mu) in [0, 1],
  * bilinear; alpha > 1 reads the last row. Anisotropic GGX and Beckmann use
  * the equivalent isotropic alpha sqrt(ax ay) (an approximation, its error is
- * measured in test_energy and stated in the README). Every other mf_ndf
+ * measured in test_energy, stated in docs/ACCURACY.md). Every other mf_ndf
  * (transformed, GTR, Student-t, tabulated, LEADR) is integrated on each call
  * by mf_albedo_integrate: exact but slow (4096 BRDF evaluations for E, about
  * 130 times more for E_avg); build an mf_albedo_table for it once instead.
