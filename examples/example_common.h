@@ -1,9 +1,12 @@
 /* Shared by the examples: a small RNG, a finiteness guard, and the output of
  * an example: a linear float image (written as PFM, and as EXR when built with
  * OpenEXR) and its display version (PNG: tone mapped with the sRGB transfer
- * function, panels labelled with a built-in 5x7 bitmap font, difference panels
- * through a colour map with a colour bar). No dependency: the PNG writer stores
- * deflate blocks uncompressed. Include after microfacet.h. */
+ * function, panels labelled with a built-in 5x7 bitmap font, value panels
+ * through a sequential or a diverging colour map with a colour bar whose ticks
+ * carry three significant digits, plot axes with tick labels). A label that
+ * the image edge would cut is counted and makes ex_write fail. No dependency:
+ * the PNG writer stores deflate blocks uncompressed. Include after
+ * microfacet.h. */
 #ifndef MF_EXAMPLE_COMMON_H
 #define MF_EXAMPLE_COMMON_H
 
@@ -49,11 +52,12 @@ typedef struct ex_image {
     int w, h;
     float *lin;            /* w * h * 3, linear radiance: PFM and EXR */
     unsigned char *rgb;    /* w * h * 3, display: PNG */
+    int cut;               /* labels that the image edge cut (ex_write fails on any) */
 } ex_image;
 
 static inline int ex_image_init(ex_image *im, int w, int h)
 {
-    im->w = w; im->h = h;
+    im->w = w; im->h = h; im->cut = 0;
     im->lin = (float *)calloc((size_t)w * (size_t)h * 3u, sizeof(float));
     im->rgb = (unsigned char *)calloc((size_t)w * (size_t)h * 3u, 1);
     if (im->lin && im->rgb) return 0;
@@ -117,6 +121,29 @@ static inline void ex_colormap_rgb(double t, unsigned char out[3])
     for (c = 0; c < 3; ++c) out[c] = (unsigned char)(k[i][c] + s * (k[i + 1][c] - k[i][c]) + 0.5);
 }
 
+/* Diverging colour map for signed values, t in [0, 1] with 0.5 standing for
+ * zero: near black at 0.5, through blue to pale cyan toward 0 (negative) and
+ * through red-brown to pale orange toward 1 (positive); brightness grows with
+ * |t - 0.5| the same way on both sides, so small errors stay dark either way. */
+static inline void ex_diverging_rgb(double t, unsigned char out[3])
+{
+    static const double neg[3][3] = { { 18, 18, 18 }, { 30, 80, 190 }, { 170, 225, 255 } };
+    static const double pos[3][3] = { { 18, 18, 18 }, { 190, 70, 30 }, { 255, 225, 150 } };
+    const double (*k)[3];
+    double s;
+    int i, c;
+    t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+    s = 2.0 * (t - 0.5);
+    k = s < 0.0 ? neg : pos;
+    s = 2.0 * (s < 0.0 ? -s : s);   /* [0, 2]: two linear pieces */
+    i = s < 1.0 ? 0 : 1;
+    s -= (double)i;
+    for (c = 0; c < 3; ++c) out[c] = (unsigned char)(k[i][c] + s * (k[i + 1][c] - k[i][c]) + 0.5);
+}
+
+/* a colour map: value in [0, 1] to 8-bit RGB */
+typedef void (*ex_cmap_fn)(double t, unsigned char out[3]);
+
 /* Display of a value panel: the channel mean of the linear image over vmax,
  * through the colour map. */
 static inline void ex_colormap(ex_image *im, int x0, int y0, int w, int h, double vmax)
@@ -131,20 +158,21 @@ static inline void ex_colormap(ex_image *im, int x0, int y0, int w, int h, doubl
 }
 
 /* ---- text: a 5x7 font for ASCII 32..126 (lower case drawn as upper case),
- * one byte per row, bit 4 the leftmost pixel */
+ * one byte per row, bit 4 the leftmost pixel; ex_text draws '|' one row
+ * above and two below the capitals, so that it does not read as an I */
 static const unsigned char ex_font[95][7] = {
-    {0,0,0,0,0,0,0}, {4,4,4,4,4,0,4}, {10,10,0,0,0,0,0}, {10,10,31,10,31,10,10}, {14,17,1,2,4,0,4}, {24,25,2,4,8,19,3}, {14,17,1,2,4,0,4}, {4,4,8,0,0,0,0},
+    {0,0,0,0,0,0,0}, {4,4,4,4,4,0,4}, {10,10,0,0,0,0,0}, {10,10,31,10,31,10,10}, {4,15,20,14,5,30,4}, {24,25,2,4,8,19,3}, {12,18,20,8,21,18,13}, {4,4,8,0,0,0,0},
     {2,4,8,8,8,4,2}, {8,4,2,2,2,4,8}, {0,4,21,14,21,4,0}, {0,4,4,31,4,4,0}, {0,0,0,0,12,4,8}, {0,0,0,31,0,0,0}, {0,0,0,0,0,12,12}, {0,1,2,4,8,16,0},
     {14,17,19,21,25,17,14}, {4,12,4,4,4,4,14}, {14,17,1,2,4,8,31}, {31,2,4,2,1,17,14}, {2,6,10,18,31,2,2}, {31,16,30,1,1,17,14}, {6,8,16,30,17,17,14}, {31,1,2,4,8,8,8},
     {14,17,17,14,17,17,14}, {14,17,17,15,1,2,12}, {0,12,12,0,12,12,0}, {0,12,12,0,12,4,8}, {2,4,8,16,8,4,2}, {0,0,31,0,31,0,0}, {8,4,2,1,2,4,8}, {14,17,1,2,4,0,4},
-    {14,17,1,2,4,0,4}, {14,17,17,31,17,17,17}, {30,17,17,30,17,17,30}, {14,17,16,16,16,17,14}, {30,17,17,17,17,17,30}, {31,16,16,30,16,16,31}, {31,16,16,30,16,16,16}, {14,17,16,23,17,17,15},
+    {14,17,23,21,23,16,15}, {14,17,17,31,17,17,17}, {30,17,17,30,17,17,30}, {14,17,16,16,16,17,14}, {30,17,17,17,17,17,30}, {31,16,16,30,16,16,31}, {31,16,16,30,16,16,16}, {14,17,16,23,17,17,15},
     {17,17,17,31,17,17,17}, {14,4,4,4,4,4,14}, {7,2,2,2,2,18,12}, {17,18,20,24,20,18,17}, {16,16,16,16,16,16,31}, {17,27,21,21,17,17,17}, {17,17,25,21,19,17,17}, {14,17,17,17,17,17,14},
     {30,17,17,30,16,16,16}, {14,17,17,17,21,18,13}, {30,17,17,30,20,18,17}, {15,16,16,14,1,1,30}, {31,4,4,4,4,4,4}, {17,17,17,17,17,17,14}, {17,17,17,17,17,10,4}, {17,17,17,21,21,21,10},
-    {17,17,10,4,10,17,17}, {17,17,10,4,4,4,4}, {31,1,2,4,8,16,31}, {14,8,8,8,8,8,14}, {14,17,1,2,4,0,4}, {14,2,2,2,2,2,14}, {4,10,17,0,0,0,0}, {0,0,0,0,0,0,31},
-    {14,17,1,2,4,0,4}, {14,17,17,31,17,17,17}, {30,17,17,30,17,17,30}, {14,17,16,16,16,17,14}, {30,17,17,17,17,17,30}, {31,16,16,30,16,16,31}, {31,16,16,30,16,16,16}, {14,17,16,23,17,17,15},
+    {17,17,10,4,10,17,17}, {17,17,10,4,4,4,4}, {31,1,2,4,8,16,31}, {14,8,8,8,8,8,14}, {0,16,8,4,2,1,0}, {14,2,2,2,2,2,14}, {4,10,17,0,0,0,0}, {0,0,0,0,0,0,31},
+    {8,4,2,0,0,0,0}, {14,17,17,31,17,17,17}, {30,17,17,30,17,17,30}, {14,17,16,16,16,17,14}, {30,17,17,17,17,17,30}, {31,16,16,30,16,16,31}, {31,16,16,30,16,16,16}, {14,17,16,23,17,17,15},
     {17,17,17,31,17,17,17}, {14,4,4,4,4,4,14}, {7,2,2,2,2,18,12}, {17,18,20,24,20,18,17}, {16,16,16,16,16,16,31}, {17,27,21,21,17,17,17}, {17,17,25,21,19,17,17}, {14,17,17,17,17,17,14},
     {30,17,17,30,16,16,16}, {14,17,17,17,21,18,13}, {30,17,17,30,20,18,17}, {15,16,16,14,1,1,30}, {31,4,4,4,4,4,4}, {17,17,17,17,17,17,14}, {17,17,17,17,17,10,4}, {17,17,17,21,21,21,10},
-    {17,17,10,4,10,17,17}, {17,17,10,4,4,4,4}, {31,1,2,4,8,16,31}, {14,17,1,2,4,0,4}, {4,4,4,4,4,4,4}, {14,17,1,2,4,0,4}, {0,0,8,21,2,0,0},
+    {17,17,10,4,10,17,17}, {17,17,10,4,4,4,4}, {31,1,2,4,8,16,31}, {2,4,4,8,4,4,2}, {4,4,4,4,4,4,4}, {8,4,4,2,4,4,8}, {0,0,8,21,2,0,0},
 };
 
 /* Darkens the rectangle (behind text, for legibility on any background) */
@@ -162,17 +190,24 @@ static inline void ex_shade(ex_image *im, int x0, int y0, int w, int h)
 /* Width in pixels of a string at the given scale */
 static inline int ex_text_width(const char *s, int scale) { return (int)strlen(s) * 6 * scale - scale; }
 
-/* Draws s at (x, y) (top left) in white on a darkened box; scale 1 = 5x7 */
+/* Draws s at (x, y) (top left) in white on a darkened box, 11 x (6 n + 3)
+ * pixels at scale 1 from (x - 2, y - 2); scale 1 = 5x7. A box that the image
+ * edge cuts counts in im->cut. */
 static inline void ex_text(ex_image *im, int x, int y, int scale, const char *s)
 {
-    int i, gx, gy, sx, sy;
-    ex_shade(im, x - 2 * scale, y - 2 * scale, ex_text_width(s, scale) + 4 * scale, 11 * scale);
+    int i, gx, gy, sx, sy, bw = ex_text_width(s, scale) + 4 * scale;
+    if (x - 2 * scale < 0 || y - 2 * scale < 0 || x - 2 * scale + bw > im->w || y + 9 * scale > im->h) {
+        ++im->cut;
+        fprintf(stderr, "label cut by the image edge: \"%s\" at (%d, %d)\n", s, x, y);
+    }
+    ex_shade(im, x - 2 * scale, y - 2 * scale, bw, 11 * scale);
     for (i = 0; s[i]; ++i) {
         int ch = (unsigned char)s[i];
         const unsigned char *g = ex_font[(ch >= 32 && ch < 127 ? ch : '?') - 32];
-        for (gy = 0; gy < 7; ++gy)
+        int bar = ch == '|';   /* rows -1..8 instead of 0..6 */
+        for (gy = -bar; gy < 7 + 2 * bar; ++gy)
             for (gx = 0; gx < 5; ++gx) {
-                if (!(g[gy] & (16 >> gx))) continue;
+                if (!(bar ? gx == 2 : (g[gy] & (16 >> gx)) != 0)) continue;
                 for (sy = 0; sy < scale; ++sy)
                     for (sx = 0; sx < scale; ++sx) {
                         int px = x + (6 * i + gx) * scale + sx, py = y + gy * scale + sy;
@@ -194,23 +229,60 @@ static inline void ex_label(ex_image *im, int x, int y, int scale, const char *f
     ex_text(im, x, y, scale, buf);
 }
 
-/* A horizontal colour bar at (x, y), w x h pixels, for values 0..vmax, with
- * the ends labelled (label: what the values are) */
-static inline void ex_colorbar(ex_image *im, int x, int y, int w, int h, double vmax, const char *label)
+/* Draws a filled rectangle of one display colour (clipped to the image). */
+static inline void ex_fill(ex_image *im, int x0, int y0, int w, int h, const unsigned char c[3])
 {
-    int i, j;
+    int x, y;
+    for (y = y0 < 0 ? 0 : y0; y < y0 + h && y < im->h; ++y)
+        for (x = x0 < 0 ? 0 : x0; x < x0 + w && x < im->w; ++x)
+            memcpy(im->rgb + 3 * ((size_t)y * (size_t)im->w + (size_t)x), c, 3);
+}
+
+/* A tick label: the value with three significant digits ("%.3g"), and
+ * "0" for values within 1e-9 of the range of zero (no "-1.39e-17"). */
+static inline void ex_tick_text(char *buf, size_t n, double v, double range)
+{
+    if (v < 0.0 ? -v < 1e-9 * range : v < 1e-9 * range) v = 0.0;
+    snprintf(buf, n, "%.3g", v);
+}
+
+/* A horizontal colour bar at (x, y), w x h pixels, for values vmin..vmax
+ * through the colour map, with tick marks and labels (three significant
+ * digits) at both ends and in the middle, and the label (what the values
+ * are) above it. The bar takes 12 pixels above it and 14 below. */
+static inline void ex_colorbar_map(ex_image *im, int x, int y, int w, int h, double vmin, double vmax, ex_cmap_fn map,
+                                   const char *label)
+{
+    static const unsigned char white[3] = { 255, 255, 255 };
+    int i, k;
     char buf[64];
     for (i = 0; i < w; ++i) {
         unsigned char c[3];
-        ex_colormap_rgb((double)i / (double)(w - 1), c);
-        for (j = 0; j < h; ++j)
-            if (x + i >= 0 && x + i < im->w && y + j >= 0 && y + j < im->h)
-                memcpy(im->rgb + 3 * ((size_t)(y + j) * (size_t)im->w + (size_t)(x + i)), c, 3);
+        map((double)i / (double)(w - 1), c);
+        ex_fill(im, x + i, y, 1, h, c);
     }
-    ex_text(im, x, y + h + 4, 1, "0");
-    snprintf(buf, sizeof buf, "%g", vmax);
-    ex_text(im, x + w - ex_text_width(buf, 1), y + h + 4, 1, buf);
+    for (k = 0; k < 3; ++k) {
+        int tx = x + k * (w - 1) / 2, lx;
+        ex_fill(im, tx, y + h, 1, 3, white);
+        ex_tick_text(buf, sizeof buf, vmin + (vmax - vmin) * 0.5 * (double)k, vmax - vmin);
+        lx = tx - (k == 0 ? 0 : k == 1 ? ex_text_width(buf, 1) / 2 : ex_text_width(buf, 1) - 1);
+        ex_text(im, lx, y + h + 5, 1, buf);
+    }
     ex_text(im, x, y - 12, 1, label);
+}
+
+/* The same for values 0..vmax through the sequential colour map. */
+static inline void ex_colorbar(ex_image *im, int x, int y, int w, int h, double vmax, const char *label)
+{
+    ex_colorbar_map(im, x, y, w, h, 0.0, vmax, ex_colormap_rgb, label);
+}
+
+/* A "nice" tick step for an axis spanning `range`: 1, 2, 2.5 or 5 times a
+ * power of ten, giving about n intervals. */
+static inline double ex_nice_step(double range, int n)
+{
+    double raw = range / (double)(n > 0 ? n : 1), p = pow(10.0, floor(log10(raw))), f = raw / p;
+    return (f < 1.5 ? 1.0 : f < 2.25 ? 2.0 : f < 3.5 ? 2.5 : f < 7.5 ? 5.0 : 10.0) * p;
 }
 
 /* ---- writers */
@@ -305,6 +377,7 @@ static inline int ex_write(const ex_image *im, const char *base)
 {
     char path[1024];
     int err = 0;
+    if (im->cut) { fprintf(stderr, "%s: %d label(s) cut by the image edge\n", base, im->cut); err = 1; }
     snprintf(path, sizeof path, "%s.png", base);
     if (ex_write_png(path, im->rgb, im->w, im->h)) err = 1; else printf("wrote %s (%d x %d, labelled)\n", path, im->w, im->h);
     snprintf(path, sizeof path, "%s.pfm", base);

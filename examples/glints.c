@@ -1,11 +1,16 @@
 /* Demonstrates the Inverse Bin Map (mf_ibm_build, mf_ibm_brdf with pixel
- * footprints) on a car-paint flake plane: a 512 x 512 tiling normal map of
+ * footprints) on a car-paint flake plane: a 2048 x 2048 tiling normal map of
  * Voronoi flakes (about 4 texels across) whose normals follow GTR (alpha 0.08,
  * gamma 1.5; thesis Sec. 5.5.4), Beckmann flake roughness 0.02, over a dark
  * red base, lit by a low sun placed so its mirror highlight is in the middle
  * of the view. Columns: the same perspective view ever farther away, the
- * texture tile spanning 2, 1/2, 1/8 and 1/32 of the panel width at the panel
- * center (about 1, 5, 20 and 80 texels per pixel). Rows:
+ * texture tile spanning 8, 2, 1/2 and 1/8 of the panel width at the panel
+ * center (about 1.3, 5, 20 and 80 texels per pixel). The map is that large so
+ * that even at 80 texels per pixel a tile spans 25 pixels: a 512 x 512 tile
+ * would repeat every 6 pixels there, and the box filter of a texture that
+ * repeats within a few pixels is streaky (moire along the lines of constant
+ * tile phase, which converge to the vanishing point), in the IBM row and, up
+ * to noise, in a converged reference alike. Rows:
  *   1. IBM: the filtered glint BRDF over each pixel's footprint (the
  *      parallelogram of its ray differentials on the plane), one evaluation
  *      per pixel;
@@ -16,7 +21,7 @@
  * Prints per panel the mean radiance of each row (equal up to noise: the IBM
  * is the pixel's exact box filter, up to the binning) and the RMS per-pixel
  * deviation of rows 2 and 3 from row 1, and the count of non-finite values
- * (expected 0; the exit status is 1 otherwise). About 2 s on one core at -O2.
+ * (expected 0; the exit status is 1 otherwise). About 5 s on one core at -O2.
  * Writes base.png (tone mapped; rows, texel density and the deviations
  * labelled), base.pfm (linear) and, built with OpenEXR, base.exr.
  *
@@ -37,11 +42,11 @@
 #define ROWS 3
 #define W (COLS * PW)
 #define H (ROWS * PH)
-#define N 512             /* normal map size */
+#define N 2048            /* normal map size */
 #define CELL 4            /* flake spacing in texels */
 #define REF_SPP 64        /* 8 x 8 jittered */
 
-static const mf_real tiles[COLS] = { MF_R(0.5), MF_R(2.0), MF_R(8.0), MF_R(32.0) };  /* tiles across the panel */
+static const mf_real tiles[COLS] = { MF_R(0.125), MF_R(0.5), MF_R(2.0), MF_R(8.0) };  /* tiles across the panel */
 static const mf_real flake_alpha = MF_R(0.02), gtr_alpha = MF_R(0.08);
 static const mf_real view_deg = MF_R(60.0), vfov_deg = MF_R(30.0);
 static const mf_real sun_rgb[3] = { MF_R(0.06), MF_R(0.056), MF_R(0.05) };   /* irradiance */
@@ -200,18 +205,23 @@ int main(int argc, char **argv)
     ex_tonemap_all(&im, 1.0);
     for (col = 0; col < COLS; ++col) {
         double np = 3.0 * PW * PH, m = sum[0][col] / np;
-        if (col == 0) ex_text(&im, 4, 4, 1, "tile: 2 panel widths");
-        else ex_label(&im, col * PW + 4, 4, 1, "tile: 1/%g panel width", (double)tiles[col]);
+        /* the tile's width, and the texels per pixel at the panel center */
+        if (tiles[col] < MF_R(1.0)) ex_label(&im, col * PW + 4, 4, 1, "tile %g panels, %.3g texel/px", 1.0 / (double)tiles[col],
+                                             (double)N * (double)tiles[col] / PW);
+        else ex_label(&im, col * PW + 4, 4, 1, "tile 1/%g panel, %.3g texel/px", (double)tiles[col], (double)N * (double)tiles[col] / PW);
         for (s = 0; s < ROWS; ++s) {
             ex_text(&im, col * PW + 4, s * PH + (s ? 4 : 16), 1, row_names[s]);
-            if (s) ex_label(&im, col * PW + 4, s * PH + PH - 12, 1, "RMS dev. %.0f%% of IBM", 100.0 * sqrt(dev[s - 1][col] / np) / m);
+            if (s) ex_label(&im, col * PW + 4, s * PH + PH - 12, 1, "RMS dev. %.3g%% of IBM", 100.0 * sqrt(dev[s - 1][col] / np) / m);
         }
     }
-    ex_label(&im, 4, 2 * PH - 26, 1, "GTR %g g1.5 flakes, alpha %g", (double)gtr_alpha, (double)flake_alpha);
+    ex_label(&im, 4, 2 * PH - 38, 1, "flake normals: GTR %.3g, gamma 1.5", (double)gtr_alpha);
+    ex_label(&im, 4, 2 * PH - 26, 1, "flake roughness: Beckmann %.3g", (double)flake_alpha);
     err = ex_write(&im, base);
     ex_image_free(&im);
-    printf("%d x %d panels of %d x %d; the tile spans %g, 1/%g, 1/%g and 1/%g of the panel width\n", COLS, ROWS, PW, PH,
-           (double)(1.0f / (float)tiles[0]), (double)tiles[1], (double)tiles[2], (double)tiles[3]);
+    printf("%d x %d panels of %d x %d; the tile spans %g, %g, 1/%g and 1/%g of the panel width (%.3g, %.3g, %.3g, %.3g "
+           "texels per pixel at the center)\n", COLS, ROWS, PW, PH, 1.0 / (double)tiles[0], 1.0 / (double)tiles[1], (double)tiles[2],
+           (double)tiles[3], (double)N * (double)tiles[0] / PW, (double)N * (double)tiles[1] / PW, (double)N * (double)tiles[2] / PW,
+           (double)N * (double)tiles[3] / PW);
     printf("rows: IBM over the pixel footprint, one normal-map sample per pixel, %d-sample reference\n", REF_SPP);
     printf("panel means (IBM, one sample, %d samples) and RMS per-pixel deviation from IBM, %% of the IBM mean:\n", REF_SPP);
     for (col = 0; col < COLS; ++col) {

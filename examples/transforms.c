@@ -44,6 +44,12 @@
 static const char *const panel_names[PANELS] = {
     "identity", "stretch diag(5, 1)", "skew [1 2; 0 1]", "Jacobian of (u, v + 2u^5)"
 };
+/* on the image: a short title (scale 2) and the matrix (scale 1), each
+ * within its panel */
+static const char *const panel_titles[PANELS] = { "identity", "stretch", "skew", "warp Jacobian" };
+static const char *const panel_matrices[PANELS] = {
+    "M = I", "M = diag(5, 1)", "M = [1 2; 0 1]", "M = Jacobian of (u, v + 2u^5)"
+};
 /* silver, complex IOR at roughly 650, 550, 450 nm */
 static const mf_real eta[3] = { MF_R(0.155), MF_R(0.117), MF_R(0.138) };
 static const mf_real kap[3] = { MF_R(4.83), MF_R(3.12), MF_R(2.15) };
@@ -147,9 +153,11 @@ int main(int argc, char **argv)
     }
 
     ex_tonemap_all(&im, 1.0);
-    for (px = 0; px < PANELS; ++px)
-        ex_label(&im, px * CELL + 8, 8, 2, "%d. %s", px + 1, panel_names[px]);
-    ex_label(&im, 6, H - 13, 1, "GTR gamma %g, alpha %g", (double)GAMMA, (double)ALPHA);
+    for (px = 0; px < PANELS; ++px) {
+        ex_label(&im, px * CELL + 8, 8, 2, "%d. %s", px + 1, panel_titles[px]);
+        ex_text(&im, px * CELL + 8, 30, 1, panel_matrices[px]);
+    }
+    ex_label(&im, 6, H - 13, 1, "GTR gamma %.3g, alpha %.3g", (double)GAMMA, (double)ALPHA);
     err = ex_write(&im, base_path);
     ex_image_free(&im);
 
