@@ -56,11 +56,21 @@
  *
  * ADDING A DISTRIBUTION KIND
  *
- *   1. Write src/06_kind_<name>.h (06_kind_ggx.h shows the layout): its
- *      parameter struct mf_ndf_<name> in the @decl part, a constructor that
- *      fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
+ *   1. Write src/06_kind_<name>.h (06_kind_ggx.h shows the layout of an
+ *      inline kind, 06_kind_student_t.h of a cold one): its parameter struct
+ *      mf_ndf_<name> in the @decl part (at most a pointer and six mf_real:
+ *      mf_ndf stays within 64 bytes in float; larger data goes in a built
+ *      object it points to, like mf_tabulated or mf_gtr_table), a constructor
+ *      that fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
  *      _sample_D and _sample_visible (contract in 05_ndf.h).
- *   2. Add the line X(NAME, name) to MF__NDF_KINDS in src/05_ndf.h.
+ *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
+ *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
+ *      front ends inline, whether its mean slope is 0, which numerical
+ *      sampler, LTC family, Trowbridge-Reitz forms, energy table, isotropy
+ *      at ax = ay, built object), and each trait names the functions the
+ *      module must then define (05_ndf.h lists them). Other modules never
+ *      test a kind by name; they ask its traits (tests/kind_names_check.sh,
+ *      part of `make test`, counts such tests).
  *   3. Add the kind to the test cases of tests/main.c (normalization, masking,
  *      sampling chi-square, BRDF battery and robustness sweep then cover it),
  *      run `make header` and `make test`.
@@ -198,9 +208,18 @@
  *          under -ffast-math. Energy compensation for conductors and
  *          rough dielectrics (Kulla & Conty 2017; Turquin 2019 scaling).
  *          GTR Lambda exact at every gamma (a Gauss-Jacobi rule over an exact
- *          mixture of GGX, gamma-3 or gamma-4 GTR, built by mf_gtr with 4-24
- *          nodes as alpha falls; 4.7-18.4x GGX's Lambda in float: mf_ndf is
- *          larger, 376 bytes in float, 720 in double); GTR and Student-t NDF
+ *          mixture of GGX, gamma-3 or gamma-4 GTR, with 4-24 nodes as alpha
+ *          falls; 4.7-18.4x GGX's Lambda in float; the rule lives in an
+ *          mf_gtr_table, mf_gtr_table_build / mf_gtr_table_ndf, and mf_gtr
+ *          at a non-integer gamma builds it at each call of Lambda); mf_ndf
+ *          is 64 bytes in float, 128 in double (was 376 and 720): M^-1 is
+ *          derived from M and 1 / det M, type is a byte, each kind's parameters fit in
+ *          32 bytes (LEADR keeps its covariance, Student-t the envelope's
+ *          masses; the rest is derived where used); every kind's traits are
+ *          digits of its line in MF__NDF_KINDS, which no other module
+ *          bypasses by testing a kind by name, and an unknown kind is no
+ *          distribution (0, no sample: two fallbacks took it for Student-t,
+ *          mf_sample_D for a delta at the normal); GTR and Student-t NDF
  *          sampling by the closed-form inverse CDF with one pow (1.7-2.4x
  *          GGX), visible normals by exact rejection from GGX and from exact
  *          GGX mixtures (2.7-4.6x GGX; was 115-160); no lost samples at

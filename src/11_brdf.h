@@ -89,7 +89,7 @@ MF_FORCE_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
 MF_FORCE_INLINE mf_vec3 mf_ggx_sample_visible_bounded(const mf_ndf *d, mf_vec3 wo, mf_real u1, mf_real u2)
 {
     mf_vec3 h;
-    if (d->type != MF_NDF_GGX || d->transformed) return mf_sample_visible(d, wo, u1, u2);
+    if (!mf__ndf_tr(d->type) || d->transformed) return mf_sample_visible(d, wo, u1, u2);
     if (!(wo.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     h = mf__ggx_vndf_unnormalized(d->ax, d->ay, wo, mf_clamp(u1, MF_R(0.0), MF_R(1.0)), mf_clamp(u2, MF_R(0.0), MF_R(1.0)),
                                   mf__ggx_bounded_k(d->ax, d->ay, wo));
@@ -102,7 +102,7 @@ MF_FORCE_INLINE mf_real mf_ggx_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_
 {
     mf_vec3 wh;
     mf_real t, k;
-    if (d->type != MF_NDF_GGX || d->transformed) return mf_brdf_pdf(d, wo, wi);
+    if (!mf__ndf_tr(d->type) || d->transformed) return mf_brdf_pdf(d, wo, wi);
     if (!(wo.z > MF_R(0.0)) || !(wi.z > MF_R(0.0))) return MF_R(0.0);
     wh = mf_normalize(mf_add(wo, wi));
     if (!(mf_dot(wo, wh) > MF_R(0.0))) return MF_R(0.0);

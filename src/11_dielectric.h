@@ -149,7 +149,7 @@ MF_FORCE_INLINE mf_vec3 mf_dielectric_sample(const mf_ndf *d, mf_vec3 wo, mf_rea
 MF_FORCE_INLINE mf_real mf_dielectric_sample_weight(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
     mf_real w;
-    if (d->type == MF_NDF_LEADR) {   /* visible normals of a tilted mean surface: the ratio itself */
+    if (mf__ndf_tilted(d->type)) {   /* visible normals of a tilted mean surface: the ratio itself */
         w = mf_dielectric_pdf(d, wo, wi, eta);
         return w > MF_R(0.0) ? mf_min(mf_dielectric_bsdf(d, wo, wi, eta) * MF_FABS(wi.z) / w, MF_BIG) : MF_R(0.0);
     }

@@ -772,11 +772,13 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
                            const mf_real *guess, mf_ltc_fit_result *out)
 {
     mf__fit_ctx c;
+    mf__ndf_prep pr;
     mf_real ct, st, sum = MF_R(0.0), fres = MF_R(0.0), p[3];
     mf_vec3 avg = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     int i, j, n1 = 32, k;
     if (!out || (!d && !brdf) || !(cos_theta_o > MF_R(0.0)) || !(cos_theta_o <= MF_R(1.0)))
         return MF_ERROR_INVALID_ARGUMENT;
+    if (d) d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     ct = cos_theta_o; st = MF_SQRT(mf_max(MF_R(1.0) - ct * ct, MF_R(0.0)));
     c.d = d; c.brdf = brdf; c.ctx = ctx; c.wo = mf_vec3_make(st, MF_R(0.0), ct);
     c.n = n1 * n1;
@@ -838,14 +840,14 @@ MFDEF mf_result mf_ltc_fit(const mf_ndf *d, mf_brdf_cos_fn brdf, void *ctx, mf_r
     return MF_SUCCESS;
 }
 
+/* the member (alpha, gamma) of the family of kind (trait LTC; checked by
+ * the caller): an unknown kind has none, and gives the distribution of no
+ * kind, whose every function returns 0 */
 static mf_ndf mf__family(int kind, mf_real alpha, mf_real gamma)
 {
-    switch (kind) {
-    case MF_NDF_BECKMANN: return mf_beckmann(alpha, alpha);
-    case MF_NDF_GTR: return mf_gtr(alpha, gamma);
-    case MF_NDF_STUDENT_T: return mf_student_t(alpha, alpha, gamma);
-    default: return mf_ggx(alpha, alpha);
-    }
+    mf_ndf d = mf__ndf_init(MF_NDF_KIND_COUNT, alpha, alpha);
+    mf__ndf_family(kind, alpha, gamma, &d);
+    return d;
 }
 
 /* grid: t = sqrt(1 - cos theta) in [0, 1], v = sqrt(alpha) in [0, 1] */
@@ -867,7 +869,7 @@ MFDEF mf_result mf_ltc_table_build(mf_ltc_table *t, int kind, mf_real gamma, int
     mf_real prev0[3], prev[3];
     if (!t) return MF_ERROR_INVALID_ARGUMENT;
     t->data = 0; t->n_theta = t->n_alpha = 0;
-    if (n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096 || kind < 0 || kind > MF_NDF_STUDENT_T)
+    if (n_theta < 2 || n_alpha < 2 || n_theta > 4096 || n_alpha > 4096 || !mf__ndf_ltc(kind))
         return MF_ERROR_INVALID_ARGUMENT;
     t->data = (float *)MF_MALLOC(sizeof(float) * 6 * (size_t)n_theta * (size_t)n_alpha);
     if (!t->data) return MF_ERROR_OUT_OF_MEMORY;
