@@ -33,7 +33,7 @@ endif
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
-        $(foreach s,header api warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+        $(foreach s,header api kinds warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
@@ -147,7 +147,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header api c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
+TEST_STEPS := header api kinds c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -198,6 +198,9 @@ step-config: | $(RES)
 	@$(RUN_STEP) config $(RES)/config check sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 step-include_cost: | $(RES)
 	@$(RUN_STEP) include_cost $(RES)/include_cost check sh tests/include_cost.sh "$(CC)" $(BUILD)
+# no module but 05_ndf.h and the kinds' own tests a kind by name (traits instead)
+step-kinds: | $(RES)
+	@$(RUN_STEP) kinds $(RES)/kinds check sh tests/kind_names_check.sh
 # (phony targets take no pattern rules: one explicit rule per configuration)
 define TEST_RUN
 step-$(1): $(BUILD)/test_$(1) | $(RES)

@@ -71,11 +71,21 @@
  *
  * ADDING A DISTRIBUTION KIND
  *
- *   1. Write src/06_kind_<name>.h (06_kind_ggx.h shows the layout): its
- *      parameter struct mf_ndf_<name> in the @decl part, a constructor that
- *      fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
+ *   1. Write src/06_kind_<name>.h (06_kind_ggx.h shows the layout of an
+ *      inline kind, 06_kind_student_t.h of a cold one): its parameter struct
+ *      mf_ndf_<name> in the @decl part (at most a pointer and six mf_real:
+ *      mf_ndf stays within 64 bytes in float; larger data goes in a built
+ *      object it points to, like mf_tabulated or mf_gtr_table), a constructor
+ *      that fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
  *      _sample_D and _sample_visible (contract in 05_ndf.h).
- *   2. Add the line X(NAME, name) to MF__NDF_KINDS in src/05_ndf.h.
+ *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
+ *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
+ *      front ends inline, whether its mean slope is 0, which numerical
+ *      sampler, LTC family, Trowbridge-Reitz forms, energy table, isotropy
+ *      at ax = ay, built object), and each trait names the functions the
+ *      module must then define (05_ndf.h lists them). Other modules never
+ *      test a kind by name; they ask its traits (tests/kind_names_check.sh,
+ *      part of `make test`, counts such tests).
  *   3. Add the kind to the test cases of tests/main.c (normalization, masking,
  *      sampling chi-square, BRDF battery and robustness sweep then cover it),
  *      run `make header` and `make test`.
@@ -484,19 +494,25 @@ typedef float mf_real;
 #define mf__ndf_lambda MF__SYM(mf__ndf_lambda)
 #define mf__ndf_sample_D MF__SYM(mf__ndf_sample_D)
 #define mf__ndf_sample_visible MF__SYM(mf__ndf_sample_visible)
+#define mf__ndf_mean_slope MF__SYM(mf__ndf_mean_slope)
+#define mf__ndf_prepare MF__SYM(mf__ndf_prepare)
 #define mf__beckmann_visible_slopes MF__SYM(mf__beckmann_visible_slopes)
-#define mf__gtr_mix_init MF__SYM(mf__gtr_mix_init)
 #define mf__gtr_sampler_init MF__SYM(mf__gtr_sampler_init)
+#define mf__gtr_mix_init MF__SYM(mf__gtr_mix_init)
+#define mf__gtr_envelope MF__SYM(mf__gtr_envelope)
+#define mf_gtr_table_build MF__SYM(mf_gtr_table_build)
 #define mf__gtr_D MF__SYM(mf__gtr_D)
 #define mf__gtr_lambda MF__SYM(mf__gtr_lambda)
 #define mf__gtr_sample_D MF__SYM(mf__gtr_sample_D)
 #define mf__gtr_sample_visible MF__SYM(mf__gtr_sample_visible)
 #define mf__gtr_tan2 MF__SYM(mf__gtr_tan2)
 #define mf__gtr_tail MF__SYM(mf__gtr_tail)
+#define mf__gtr_prepare MF__SYM(mf__gtr_prepare)
 #define mf__leadr_D MF__SYM(mf__leadr_D)
 #define mf__leadr_lambda MF__SYM(mf__leadr_lambda)
 #define mf__leadr_sample_D MF__SYM(mf__leadr_sample_D)
 #define mf__leadr_sample_visible MF__SYM(mf__leadr_sample_visible)
+#define mf__leadr_mean_slope MF__SYM(mf__leadr_mean_slope)
 #define mf__student_t_sampler_init MF__SYM(mf__student_t_sampler_init)
 #define mf__student_t_D MF__SYM(mf__student_t_D)
 #define mf__student_t_lambda MF__SYM(mf__student_t_lambda)
@@ -656,32 +672,41 @@ typedef struct mf_ndf_ggx { char none; } mf_ndf_ggx;   /* no parameters beyond m
 /* most nodes of the Lambda mixture rule (the rule takes fewer at larger
  * alpha: mf__gtr_mix_init) */
 #define MF__GTR_NQ 24
-typedef struct mf_ndf_gtr {
-    mf_real gamma;      /* tail exponent in [0, 4] */
-    mf_real norm;       /* N of D = N / (sin^2 + a^2 cos^2)^gamma */
-    mf_real L;          /* log(alpha^2) */
-    mf_real E, EM;      /* expm1((1 - gamma) L), expm1(-(1 - gamma) L) */
-    mf_real RK, RMK;    /* kL / expm1(kL) and -kL / expm1(-kL), k = 1 - gamma */
-    int mix;            /* Lambda: 0 closed form (integer gamma), mixture of 1 GGX, 2 gamma-3, 3 gamma-4 */
-    int nq;             /* nodes of the mixture rule */
-    int vmode;          /* visible sampler: 0 GGX of alpha vs[0], 1 GGX mixture, 2 rejection from GGX */
+/* What a GTR computes at each call without it: the Lambda rule at a
+ * non-integer gamma, and the visible sampler's mixture envelope (gamma below
+ * 2, alpha below 1/4). Built by mf_gtr_table_build (no allocation: a plain
+ * struct, copied as it is to device memory). Fields are filled by the
+ * builder; read them, do not write them. */
+typedef struct mf_gtr_table {
+    mf_real alpha, gamma;       /* the distribution's, clamped as mf_gtr clamps them */
+    int nq;                     /* nodes of the mixture rule, a multiple of 4 (0: integer gamma) */
     mf_real qb[MF__GTR_NQ], qw[MF__GTR_NQ];   /* mixture nodes alpha_b^2 and weights */
-    mf_real vs[21];     /* the samplers' constants (mf__gtr_sampler_init) */
+    mf_real E, EM;              /* expm1(kL), expm1(-kL), k = 1 - gamma, L = log(alpha^2) */
+    mf_real RK, RMK;            /* kL / expm1(kL) and -kL / expm1(-kL) */
+    mf_real vs[19];             /* the mixture envelope of the visible sampler (mf__gtr_envelope;
+                                   mf_ndf.mode's sampler 1 only) */
+} mf_gtr_table;
+typedef struct mf_ndf_gtr {
+    const mf_gtr_table *tab;    /* the table of mf_gtr_table_ndf, 0 from mf_gtr */
+    mf_real gamma;              /* tail exponent in [0, 4] */
+    mf_real norm;               /* N of D = N / (sin^2 + a^2 cos^2)^gamma */
+    mf_real L;                  /* log(alpha^2) */
+    mf_real A;                  /* exp((1 - gamma) L) = alpha^(2 (1 - gamma)) */
+    mf_real v0, v1;             /* the visible sampler's constants (mf__gtr_sampler_init) */
 } mf_ndf_gtr;
 typedef struct mf_ndf_leadr {
     mf_real mx, my;            /* mean slope */
-    mf_real vx, vy, cxy;       /* covariance */
-    mf_real ixx, iyy, ixy;     /* inverse covariance */
+    mf_real vx, vy, cxy;       /* covariance (its inverse and Cholesky factor are
+                                  derived where needed: mf__leadr_inverse, mf__leadr_chol) */
     mf_real norm;              /* 1 / (2 pi sqrt(det)) (Eq. 8) */
-    mf_real l00, l10, l11;     /* Cholesky factor, L L^T = covariance */
 } mf_ndf_leadr;
 typedef struct mf_ndf_student_t {
     mf_real gamma;      /* in [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] */
     mf_real K;          /* marginal slope density constant: P2(x) = K (1 + x^2/(g-1))^(1/2-g) */
     mf_real lbeta;      /* log B(gamma - 1, 1/2) */
-    mf_real vndf_p;     /* tail exponent of the numerical VNDF sampler's substitution */
-    mf_real vk;         /* gamma > 2: 1/K of the visible sampler's rejection from GGX */
-    mf_real vs[12];     /* gamma < 2: the visible sampler's mixture envelope (mf__student_t_sampler_init) */
+    mf_real vs[5];      /* the visible sampler's constants: gamma > 2, vs[0] = 1/K of its
+                           rejection from GGX; gamma < 2, the masses of its mixture
+                           envelope (mf__student_t_sampler_init) */
 } mf_ndf_student_t;
 /* A tabulated (piecewise-linear) distribution: the arrays of one built NDF, all
  * in one allocation (block, bytes) owned until mf_tabulated_release. Fields are
@@ -1197,9 +1222,13 @@ MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
 
 /* The kinds of mf_ndf, in the order of their mf_ndf_type values
  * (MF_NDF_BECKMANN = 0, MF_NDF_GGX, MF_NDF_GTR, MF_NDF_STUDENT_T, MF_NDF_LEADR
- * = the non-centered Beckmann of LEADR moments, MF_NDF_TABULATED). Each entry
- * X(NAME, name) is one module src/06_kind_<name>.h, which defines
- *   - its parameter struct mf_ndf_<name> (part @decl), stored in mf_ndf.p.<name>;
+ * = the non-centered Beckmann of LEADR moments, MF_NDF_TABULATED). Each line
+ * X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) is one module
+ * src/06_kind_<name>.h, which defines
+ *   - its parameter struct mf_ndf_<name> (part @decl), stored in mf_ndf.p.<name>,
+ *     at most 32 bytes in float (a pointer and six mf_real), so that mf_ndf
+ *     stays within 64; anything larger lives in a built object it points to
+ *     (mf_tabulated, mf_gtr_table);
  *   - its constructor(s), which fill mf_ndf through mf__ndf_init;
  *   - the four functions the generic operations dispatch to, each for the
  *     untransformed distribution (transforms are applied around them):
@@ -1211,32 +1240,132 @@ MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
  *               unit wm with density D(wm) wm.z
  *       mf_vec3 mf__<name>_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
  *               unit wm with density D_w(wm) for a view w of any length with
- *               w.z >= 0; the zero vector when there is none.
- * Adding a kind: write that module (copy 06_kind_ggx.h for the layout), add
- * its line here, and test it the way tests/test_ndf.c tests the others. */
+ *               w.z >= 0; the zero vector when there is none;
+ *   - and what its traits promise. The traits are the line's digits; no module
+ *     but this one and the kind's own tests a kind by name (tests/kind_names_check.sh):
+ *     INL  0: the generic front ends (mf_D, mf_lambda, mf_sample_D,
+ *          mf_sample_visible) reach the kind through the cold dispatch below;
+ *          1: they inline its D, Lambda and NDF sampling, which are then
+ *          MF_FORCE_INLINE, with mf__<name>_sample_D_dir (the NDF sample before
+ *          normalization); 2: its visible normals too, with
+ *          mf__<name>_sample_visible_dir (likewise). The kinds of INL 2 are
+ *          tested first.
+ *     CEN  1: centred, the mean slope is 0; 0: the kind defines
+ *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+ *          (the mean surface is tilted: projected area and BSDF weights use it).
+ *     ISO  visible normals by the numerical inversion of 07_numeric_vndf.h
+ *          through the NDF-cos CDF of an isotropic distribution: 0 none; 1 of
+ *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
+ *          The kind defines mf__<name>_tan2(d, t, q), mf__<name>_tail(d, tan2)
+ *          and mf__<name>_vndf_p(d) (see 07_numeric_vndf.h).
+ *     LTC  1: mf_ltc_table_build fits the kind's family of one roughness
+ *          alpha and one shape gamma; the kind defines
+ *          mf_ndf mf__<name>_family(mf_real alpha, mf_real gamma).
+ *     TR   1: Trowbridge-Reitz closed forms hold, 1 + Lambda(w) =
+ *          |(ax w.x, ay w.y, w.z)| / (2 w.z) (one-division G2, the bounded
+ *          visible-normal sampler of 11_brdf.h).
+ *     ETAB the built-in energy table of 17_energy_table.h: 0 none, 1 GGX's,
+ *          2 Beckmann's.
+ *     AXES 1: untransformed with ax = ay, the distribution is isotropic.
+ *     PREP 1: the kind has a built object that speeds it up (mf_<name>_table)
+ *          which the library's own long computations (fits, tables, integrals)
+ *          build when the distribution lacks it; the kind defines
+ *          const mf_ndf *mf__<name>_prepare(const mf_ndf *d, mf_ndf *copy,
+ *          mf_<name>_table *t): d itself, or copy, made from d and using t.
+ * Adding a kind: write that module (copy 06_kind_ggx.h for the layout, or a
+ * cold kind such as 06_kind_student_t.h), add its line here, and test it the
+ * way tests/test_ndf.c tests the others. */
 #define MF__NDF_KINDS(X) \
-    X(BECKMANN, beckmann) \
-    X(GGX, ggx) \
-    X(GTR, gtr) \
-    X(STUDENT_T, student_t) \
-    X(LEADR, leadr) \
-    X(TABULATED, tabulated)
+    X(BECKMANN,  beckmann,  1, 1, 0, 1, 0, 2, 1, 0) \
+    X(GGX,       ggx,       2, 1, 0, 1, 1, 1, 1, 0) \
+    X(GTR,       gtr,       0, 1, 1, 1, 0, 0, 1, 1) \
+    X(STUDENT_T, student_t, 0, 1, 2, 1, 0, 0, 1, 0) \
+    X(LEADR,     leadr,     0, 0, 0, 0, 0, 0, 0, 0) \
+    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0, 0)
 
-#define MF__NDF_ENUM(NAME, name) MF_NDF_##NAME,
+#define MF__NDF_ENUM(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF_NDF_##N,
 typedef enum mf_ndf_type { MF__NDF_KINDS(MF__NDF_ENUM) MF_NDF_KIND_COUNT } mf_ndf_type;
 #undef MF__NDF_ENUM
 
-#define MF__NDF_PARAMS(NAME, name) mf_ndf_##name name;
+/* A distribution: 64 bytes in float, 128 in double (tests/test_ndf.c checks
+ * them). M^-1 is not stored: mf__ndf_Minv derives it from M and 1 / det M
+ * (four products), mf__ndf_det |det M| from M. */
+#define MF__NDF_PARAMS(N, n, inl, cen, iso, ltc, tr, et, ax, pp) mf_ndf_##n n;
 typedef struct mf_ndf {
-    int type;           /* mf_ndf_type */
-    int transformed;    /* 1 when M (below) is not the identity */
+    unsigned char type;         /* mf_ndf_type */
+    unsigned char transformed;  /* 1 when M (below) is not the identity */
+    unsigned char mode;         /* the kind's own small integer (GTR: how its Lambda and
+                                   visible normals are computed), 0 for the others */
     mf_real ax, ay;     /* slope-space roughness along x and y (GTR: ax = ay = alpha;
                            LEADR and tabulated: a characteristic scale, informative) */
-    mf_mat2 M, Minv;    /* tangential transform of the microsurface and its inverse */
-    mf_real det;        /* |det M| */
+    mf_mat2 M;          /* tangential transform of the microsurface */
+    mf_real idet;       /* 1 / det M (signed) */
     union { MF__NDF_KINDS(MF__NDF_PARAMS) } p;   /* the kind's own parameters */
 } mf_ndf;
 #undef MF__NDF_PARAMS
+
+/* Expansion by a trait's digit: MF__IF<d>(s) is s when d is nonzero; the
+ * front ends' chains take one level of INL at a time. */
+#define MF__IF0(s)
+#define MF__IF1(s) s
+#define MF__IF2(s) s
+#define MF__IFNOT0(s) s
+#define MF__IFNOT1(s)
+#define MF__INL1_0(s)
+#define MF__INL1_1(s) s
+#define MF__INL1_2(s)
+#define MF__INL2_0(s)
+#define MF__INL2_1(s)
+#define MF__INL2_2(s) s
+
+/* The traits of kind t (an mf_ndf.type); an unknown kind has none. */
+#define MF__NDF_OR_KNOWN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) || t == MF_NDF_##N
+#define MF__NDF_OR_TILTED(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IFNOT##cen(|| t == MF_NDF_##N)
+#define MF__NDF_OR_TR(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##tr(|| t == MF_NDF_##N)
+#define MF__NDF_OR_LTC(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(|| t == MF_NDF_##N)
+#define MF__NDF_OR_AXES(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ax(|| t == MF_NDF_##N)
+#define MF__NDF_IF_ISO(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(if (t == MF_NDF_##N) return iso;)
+#define MF__NDF_IF_ETAB(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##et(if (t == MF_NDF_##N) return et;)
+/* 1 for the kinds of MF__NDF_KINDS */
+MF_FORCE_INLINE int mf__ndf_known(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_KNOWN); }
+/* 1 if the mean slope may be nonzero (CEN 0) */
+MF_FORCE_INLINE int mf__ndf_tilted(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_TILTED); }
+/* 1 where the Trowbridge-Reitz closed forms hold (TR) */
+MF_FORCE_INLINE int mf__ndf_tr(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_TR); }
+/* 1 for the families mf_ltc_table_build fits (LTC) */
+MF_FORCE_INLINE int mf__ndf_ltc(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_LTC); }
+/* 1 if ax = ay makes the untransformed kind isotropic (AXES) */
+MF_FORCE_INLINE int mf__ndf_axes(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_AXES); }
+/* the numerical visible-normal inversion of the kind (ISO): 0, 1 or 2 */
+MF_FORCE_INLINE int mf__ndf_iso(int t) { MF__NDF_KINDS(MF__NDF_IF_ISO) return 0; }
+/* the kind's built-in energy table (ETAB): 0 none, 1 GGX's, 2 Beckmann's */
+MF_FORCE_INLINE int mf__ndf_energy_table(int t) { MF__NDF_KINDS(MF__NDF_IF_ETAB) return 0; }
+#undef MF__NDF_OR_KNOWN
+#undef MF__NDF_OR_TILTED
+#undef MF__NDF_OR_TR
+#undef MF__NDF_OR_LTC
+#undef MF__NDF_OR_AXES
+#undef MF__NDF_IF_ISO
+#undef MF__NDF_IF_ETAB
+
+/* M^-1 = adj(M) / det M (the products of mf_mat2_inverse) and |det M| of a
+ * transformed distribution (the identity and 1 for the others, whose M is the
+ * identity) */
+MF_FORCE_INLINE mf_mat2 mf__ndf_Minv(const mf_ndf *d)
+{
+    return mf_mat2_make(d->M.m11 * d->idet, -d->M.m01 * d->idet, -d->M.m10 * d->idet, d->M.m00 * d->idet);
+}
+MF_FORCE_INLINE mf_real mf__ndf_det(const mf_ndf *d) { return MF_FABS(mf_mat2_det(d->M)); }
+
+/* A distribution made fast for a long computation (trait PREP): the copy
+ * and the built object it refers to; mf__ndf_prepare returns d itself, or
+ * p->d. p must outlive the use of the result. */
+#define MF__NDF_PREP_MEMBER(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(mf_##n##_table n;)
+typedef struct mf__ndf_prep {
+    mf_ndf d;
+    union { char none; MF__NDF_KINDS(MF__NDF_PREP_MEMBER) } s;
+} mf__ndf_prep;
+#undef MF__NDF_PREP_MEMBER
 
 MF_INLINE mf_real mf__clamp_alpha(mf_real a)
 {
@@ -1269,12 +1398,13 @@ MF_INLINE mf_ndf mf__ndf_init(int type, mf_real ax, mf_real ay)
     unsigned char *b = (unsigned char *)&d.p;
     size_t i;
     for (i = 0; i < sizeof d.p; ++i) b[i] = 0;
-    d.type = type;
+    d.type = (unsigned char)type;
+    d.transformed = 0;
+    d.mode = 0;
     d.ax = mf__clamp_alpha(ax);
     d.ay = mf__clamp_alpha(ay);
-    d.transformed = 0;
-    d.M = d.Minv = mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    d.det = MF_R(1.0);
+    d.M = mf_mat2_make(MF_R(1.0), MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    d.idet = MF_R(1.0);
     return d;
 }
 
@@ -1324,11 +1454,86 @@ MF_FORCE_INLINE void mf__stretch_view(mf_real ax, mf_real ay, mf_vec3 w, mf_real
     else { *cp = MF_R(1.0); *sp = MF_R(0.0); }
 }
 /* The generic dispatch of the untransformed kinds (cold: the front ends in
- * modules 8-10 inline GGX and Beckmann and call these for the others). */
+ * modules 8-10 inline the kinds of INL > 0 and call these for the others).
+ * An unknown kind gives 0, and no sample: the zero vector. */
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
+/* The mean slope of the untransformed distribution: (0, 0) for the centred kinds
+ * (CEN 1) and unknown ones. */
+MF_COLD void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
+/* d, or a copy of it with its built object (trait PREP) in p */
+MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
+
+/* The front ends' dispatch: the kinds of INL 2, then those of INL 1, inline,
+ * then the cold dispatch. The inline kinds' functions, defined in their
+ * modules (06), are declared here. */
+#define MF__NDF_INL_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##inl( \
+    MF_FORCE_INLINE mf_real mf__##n##_D(const mf_ndf *d, mf_vec3 wm); \
+    MF_FORCE_INLINE mf_real mf__##n##_lambda(const mf_ndf *d, mf_vec3 w); \
+    MF_FORCE_INLINE mf_vec3 mf__##n##_sample_D(const mf_ndf *d, mf_real u1, mf_real u2); \
+    MF_FORCE_INLINE mf_vec3 mf__##n##_sample_D_dir(const mf_ndf *d, mf_real u1, mf_real u2);) \
+    MF__INL2_##inl( \
+    MF_FORCE_INLINE mf_vec3 mf__##n##_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2); \
+    MF_FORCE_INLINE mf_vec3 mf__##n##_sample_visible_dir(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);)
+MF__NDF_KINDS(MF__NDF_INL_DECL)
+#undef MF__NDF_INL_DECL
+#define MF__NDF_TRY_D2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
+#define MF__NDF_TRY_D1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
+#define MF__NDF_TRY_L2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
+#define MF__NDF_TRY_L1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
+#define MF__NDF_TRY_S2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
+#define MF__NDF_TRY_S1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
+#define MF__NDF_TRY_SD2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
+#define MF__NDF_TRY_SD1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
+#define MF__NDF_TRY_V2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible(d, w, u1, u2);)
+#define MF__NDF_TRY_VD2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible_dir(d, w, u1, u2);)
+/* D of the untransformed distribution (homogeneous of degree -4 in wm) */
+MF_FORCE_INLINE mf_real mf__ndf_D_inline(const mf_ndf *d, mf_vec3 wm)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_D2) MF__NDF_KINDS(MF__NDF_TRY_D1)
+    return mf__ndf_D(d, wm);
+}
+/* Lambda of the untransformed distribution (w of any length) */
+MF_FORCE_INLINE mf_real mf__ndf_lambda_inline(const mf_ndf *d, mf_vec3 w)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_L2) MF__NDF_KINDS(MF__NDF_TRY_L1)
+    return mf__ndf_lambda(d, w);
+}
+/* NDF sampling, unit wm; and a positive multiple of it (the inline kinds skip
+ * the normalization that a transform's M^-T would undo); u1, u2 in [0, 1] */
+MF_FORCE_INLINE mf_vec3 mf__ndf_sample_D_inline(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_S2) MF__NDF_KINDS(MF__NDF_TRY_S1)
+    return mf__ndf_sample_D(d, u1, u2);
+}
+MF_FORCE_INLINE mf_vec3 mf__ndf_sample_D_dir_inline(const mf_ndf *d, mf_real u1, mf_real u2)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_SD2) MF__NDF_KINDS(MF__NDF_TRY_SD1)
+    return mf__ndf_sample_D(d, u1, u2);
+}
+/* visible normals, unit wm; and a positive multiple of it (zero vector: none) */
+MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_inline(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_V2)
+    return mf__ndf_sample_visible(d, w, u1, u2);
+}
+MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_dir_inline(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_VD2)
+    return mf__ndf_sample_visible(d, w, u1, u2);
+}
+#undef MF__NDF_TRY_D2
+#undef MF__NDF_TRY_D1
+#undef MF__NDF_TRY_L2
+#undef MF__NDF_TRY_L1
+#undef MF__NDF_TRY_S2
+#undef MF__NDF_TRY_S1
+#undef MF__NDF_TRY_SD2
+#undef MF__NDF_TRY_SD1
+#undef MF__NDF_TRY_V2
+#undef MF__NDF_TRY_VD2
 /* ======================================================================== */
 /* == 6. Distribution kinds: Beckmann                                       */
 /* ======================================================================== */
@@ -1395,7 +1600,8 @@ MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_ve
     return mf_normalize(mf_vec3_make(-ax * x, -ay * y, MF_R(1.0)));
 }
 
-/* The kind's entries of the generic dispatch (05_ndf.h). */
+/* The kind's entries of the generic dispatch (05_ndf.h; INL 1: the front
+ * ends inline D, Lambda and the NDF sampling). */
 MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
 /* u1, u2 in [0, 1] (mf_sample_D clamps them) */
@@ -1410,6 +1616,12 @@ MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_re
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
+}
+/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__beckmann_family(mf_real alpha, mf_real gamma)
+{
+    (void)gamma;
+    return mf_beckmann(alpha, alpha);
 }
 /* ======================================================================== */
 /* == 6. Distribution kinds: GGX                                            */
@@ -1533,7 +1745,8 @@ MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
     return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
 }
 
-/* The kind's entries of the generic dispatch (05_ndf.h). */
+/* The kind's entries of the generic dispatch (05_ndf.h; INL 2: the front
+ * ends inline them). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
 /* the NDF sample not normalized (mf_sample_D normalizes a transformed one
@@ -1552,6 +1765,18 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_re
 {
     return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
 }
+/* the visible normal before its normalization (a transformed GGX normalizes
+ * once, after M^-T); w.z >= 0 */
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible_dir(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    return mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
+}
+/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__ggx_family(mf_real alpha, mf_real gamma)
+{
+    (void)gamma;
+    return mf_ggx(alpha, alpha);
+}
 /* ======================================================================== */
 /* == 6. Distribution kinds: GTR                                            */
 /* ======================================================================== */
@@ -1559,23 +1784,37 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_re
  * limit C.6), isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma. Lambda from
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
- * rule built at construction (mf__gtr_mix_init); NDF sampling by the
- * closed-form inverse CDF (mf__gtr_sample_D), visible normals by exact
- * rejection from GGX or from a mixture of GGX lobes (mf__gtr_sample_visible),
- * falling back on the exact numerical inversion of 07_numeric_vndf.h.
- * Everything but the constructor is cold. */
-MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a);
-MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
+ * rule (mf__gtr_mix_init): too large for mf_ndf, it lives in an mf_gtr_table
+ * (mf_gtr_table_build, mf_gtr_table_ndf), or is built at each call of Lambda
+ * when the distribution has none (mf_gtr at a non-integer gamma: exact, about
+ * a microsecond). NDF sampling by the closed-form inverse CDF
+ * (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
+ * mixture of GGX lobes (mf__gtr_sample_visible), falling back on the exact
+ * numerical inversion of 07_numeric_vndf.h. Everything but the constructors
+ * is cold. */
+/* mf_ndf.mode of a GTR: the Lambda mixture (0 closed form at integer gamma,
+ * mixture of 1 GGX, 2 gamma-3, 3 gamma-4) times 4, plus the visible sampler
+ * (0 GGX of alpha v0, 1 GGX mixture, 2 rejection from GGX) */
+#define MF__GTR_MIX(d) ((int)(d)->mode >> 2)
+#define MF__GTR_VMODE(d) ((int)(d)->mode & 3)
+MF_COLD int mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
+MF_COLD void mf__gtr_mix_init(mf_gtr_table *t, mf_real a, mf_real gamma);
+MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19]);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
  * alpha in [MF_ALPHA_MIN, 1], gamma in [0, 4] (clamped; see CLAMPS above).
  * gamma = 2 is GGX, gamma = 1 the Berry distribution (limit C.6), gamma = 0
  * the uniform 1/pi; alpha = 1 gives 1/pi for every gamma. N is written with
- * x/expm1(x) so the limits gamma -> 1 and alpha -> 1 are exact. */
+ * x/expm1(x) so the limits gamma -> 1 and alpha -> 1 are exact. At a
+ * non-integer gamma, Lambda builds its rule at each call (about a
+ * microsecond); below gamma 2 and alpha 1/4 the visible sampler derives its
+ * envelope at each sample: for speed, build an mf_gtr_table once and use
+ * mf_gtr_table_ndf (the same values). */
 MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
 {
     mf_ndf d;
     mf_ndf_gtr *p;
     mf_real a, L, k;
+    int mix;
     a = mf__clamp_alpha(alpha);
     if (a > MF_R(1.0)) a = MF_R(1.0);
     /* the bits: under -ffast-math the comparisons let NaN through, and the
@@ -1590,23 +1829,47 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     /* N = (gamma-1)(a^2-1) / (pi (1 - a^(2(1-gamma))))  (C.5) = r(kL) / (pi r(L)) */
     p->norm = mf__x_over_expm1(k * L) / (MF_PI * mf__x_over_expm1(L));
     p->L = L;
-    p->E = MF_EXPM1(k * L);
-    p->EM = MF_EXPM1(-k * L);
-    p->RK = mf__x_over_expm1(k * L);
-    p->RMK = mf__x_over_expm1(-k * L);
-    mf__gtr_mix_init(p, a);
-    mf__gtr_sampler_init(p, a);
+    p->A = MF_EXP(k * L);
+    mix = gamma == (mf_real)(int)gamma ? 0 : gamma < MF_R(2.0) ? 1 : gamma < MF_R(3.0) ? 2 : 3;
+    d.mode = (unsigned char)(4 * mix + mf__gtr_sampler_init(p, a));
     return d;
 }
 
+/* The table of mf_gtr(alpha, gamma) into *t (nothing is allocated, nothing
+ * to release). MF_ERROR_INVALID_ARGUMENT for a NULL t. */
+MF_COLD mf_result mf_gtr_table_build(mf_gtr_table *t, mf_real alpha, mf_real gamma);
+/* The GTR of a built table: the values of mf_gtr(t->alpha, t->gamma), to the
+ * bit, with Lambda at a non-integer gamma as fast as at an integer one, and
+ * the mixture sampler's envelope read, not derived at each sample. The
+ * distribution refers to t: keep t alive, in place and unchanged while it is
+ * used (for CUDA, copy the struct to device memory and pass its device
+ * address). A NULL t gives a distribution whose every function returns 0. */
+MF_INLINE mf_ndf mf_gtr_table_ndf(const mf_gtr_table *t)
+{
+    mf_ndf d;
+    if (!t) return mf__ndf_init(MF_NDF_KIND_COUNT, MF_R(1.0), MF_R(1.0));
+    d = mf_gtr(t->alpha, t->gamma);
+    d.p.gtr.tab = t;
+    return d;
+}
+/* the member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
+{
+    return mf_gtr(alpha, gamma);
+}
+
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h). */
+ * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h; ISO 1). */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2);
+MF_INLINE mf_real mf__gtr_vndf_p(const mf_ndf *d) { (void)d; return MF_R(4.0); }   /* tan ~ q^-1/2 at every gamma */
+/* d with its table built in t (trait PREP), or d itself where it has one or
+ * needs none (integer gamma, sampler other than the mixture) */
+MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_table *t);
 /* sqrt(x) for x in [1, 2e16] in the mixture loops of mf__gtr_lambda. Float:
  * the bit-level first guess of 1/sqrt(x) (relative error < 3.5%), three
  * Newton steps y (3 - x y^2) / 2 (each squares the error: a few float ulps),
@@ -1642,25 +1905,32 @@ MF_INLINE mf_real mf__gtr_sqrt(mf_real x)
  * [vx c; c vy] (positive definite; mf_leadr_ndf ensures both). */
 MF_INLINE mf_ndf mf__leadr_ndf_make(mf_real mx, mf_real my, mf_real vx, mf_real vy, mf_real c)
 {
-    mf_real det, l00, l10;
     mf_ndf d = mf__ndf_init(MF_NDF_LEADR, MF_SQRT(MF_R(2.0) * vx), MF_SQRT(MF_R(2.0) * vy));
     mf_ndf_leadr *p = &d.p.leadr;
     p->mx = mx; p->my = my;
     p->vx = vx; p->vy = vy; p->cxy = c;
-    det = vx * vy - c * c;
-    p->ixx = vy / det; p->iyy = vx / det; p->ixy = -c / det;
-    p->norm = MF_R(1.0) / (MF_R(2.0) * MF_PI * MF_SQRT(det));
-    l00 = MF_SQRT(vx); l10 = c / l00;
-    p->l00 = l00; p->l10 = l10;
-    p->l11 = MF_SQRT(mf_max(vy - l10 * l10, MF_R(1e-30)));
+    p->norm = MF_R(1.0) / (MF_R(2.0) * MF_PI * MF_SQRT(vx * vy - c * c));
     return d;
 }
+/* the inverse covariance (ixx, iyy, ixy) and the Cholesky factor L (L L^T =
+ * covariance, l01 = 0) */
+MF_INLINE void mf__leadr_inverse(const mf_ndf_leadr *p, mf_real *ixx, mf_real *iyy, mf_real *ixy)
+{
+    mf_real det = p->vx * p->vy - p->cxy * p->cxy;
+    *ixx = p->vy / det; *iyy = p->vx / det; *ixy = -p->cxy / det;
+}
+MF_INLINE void mf__leadr_chol(const mf_ndf_leadr *p, mf_real *l00, mf_real *l10, mf_real *l11)
+{
+    *l00 = MF_SQRT(p->vx); *l10 = p->cxy / *l00;
+    *l11 = MF_SQRT(mf_max(p->vy - *l10 * *l10, MF_R(1e-30)));
+}
 
-/* The kind's entries of the generic dispatch (05_ndf.h). */
+/* The kind's entries of the generic dispatch (05_ndf.h; CEN 0: the mean slope). */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__leadr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
+MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
 /* ======================================================================== */
 /* == 6. Distribution kinds: Student-t                                      */
 /* ======================================================================== */
@@ -1682,11 +1952,9 @@ MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p);
 MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
 {
     mf_ndf d;
-    mf_real g1, beta;
     if (!(gamma > MF_STUDENT_T_GAMMA_MIN)) gamma = MF_STUDENT_T_GAMMA_MIN;
     if (gamma > MF_STUDENT_T_GAMMA_MAX) gamma = MF_STUDENT_T_GAMMA_MAX;
     d = mf__ndf_init(MF_NDF_STUDENT_T, alpha_x, alpha_y);
-    g1 = gamma - MF_R(1.0);
     d.p.student_t.gamma = gamma;
     {
         /* in double in every build: the log-gamma values reach 5900 at gamma 1000,
@@ -1696,13 +1964,13 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
         d.p.student_t.K = (mf_real)(sqrt(gd - 1.0) * exp(lg - lgamma(gd)) / 1.7724538509055160273);
         d.p.student_t.lbeta = (mf_real)(lgamma(gd - 1.0) + 0.57236494292470008708 - lg);
     }
-    /* the sampler's tail substitution must cancel tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2) */
-    beta = MF_R(0.5) / g1;
-    d.p.student_t.vndf_p = MF_R(2.0) / (MF_R(1.0) - beta);
-    /* K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v = 1 */
-    d.p.student_t.vk = MF_R(0.25) * MF_EXP(-gamma * MF_LOG(g1 / gamma));
     mf__student_t_sampler_init(&d.p.student_t);
     return d;
+}
+/* the member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__student_t_family(mf_real alpha, mf_real gamma)
+{
+    return mf_student_t(alpha, alpha, gamma);
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
  * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h). */
@@ -1712,6 +1980,27 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__student_t_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__student_t_tail(const mf_ndf *d, mf_real tan2);
+/* Exponent p of the numerical sampler's substitution (07_numeric_vndf.h): it
+ * must cancel the tail tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2), p = 2 / (1 - beta). */
+MF_INLINE mf_real mf__student_t_vndf_p(const mf_ndf *d)
+{
+    mf_real beta = MF_R(0.5) / (d->p.student_t.gamma - MF_R(1.0));
+    return MF_R(2.0) / (MF_R(1.0) - beta);
+}
+/* Term j of the visible sampler's mixture envelope (gamma < 2, see
+ * mf__student_t_sampler_init): its k_j, with *kk = -k_j (q_j > 0) or k_j, and
+ * *s = s_j (1 on the unbounded pieces); returns q_j. */
+MF_INLINE mf_real mf__student_t_term(mf_real g, int j, mf_real *kj, mf_real *kk, mf_real *s)
+{
+    mf_real ln4 = MF_R(1.3862943611198906), q = g - (j == 0 ? MF_R(1.0) : j < 3 ? MF_R(1.5) : MF_R(2.0)), aq = MF_FABS(q);
+    *s = MF_R(1.0);
+    if (j == 2 || j == 3) {                 /* [1/4, 4]: log(hi/lo) = log 16 */
+        *s = -MF_EXPM1(-aq * MF_R(2.0) * ln4);
+        *kj = MF_R(2.0) * ln4 / mf__x_over_expm1(-aq * MF_R(2.0) * ln4);
+    } else *kj = MF_R(1.0) / aq;
+    *kk = q > MF_R(0.0) ? -*kj : *kj;
+    return q;
+}
 /* ======================================================================== */
 /* == 6. Distribution kinds: tabulated (piecewise-linear)                   */
 /* ======================================================================== */
@@ -1793,6 +2082,13 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
 /* wm with density D_w(wm) for the view w of any length (w.z >= 0), of the
  * kind d stretched by (ax, ay) (GTR: 1, 1; Student-t: its roughness). */
 MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2);
+/* The same for the untransformed d itself, stretched as its trait ISO says
+ * (1: not, 2: by (ax, ay)); the zero vector for a kind without the trait. */
+MF_INLINE mf_vec3 mf__iso_sample_visible_kind(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    int s = mf__ndf_iso(d->type) == 2;
+    return mf__iso_sample_visible_view(d, s ? d->ax : MF_R(1.0), s ? d->ay : MF_R(1.0), w, u1, u2);
+}
 /* ======================================================================== */
 /* == 8. Linearly transformed microsurfaces                                 */
 /* ======================================================================== */
@@ -1832,16 +2128,9 @@ MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
     mf_ndf d = base;
     mf_mat2 P = base.transformed ? mf_mat2_mul(M, base.M) : M;
     if (!mf_transform_is_valid(M) || !mf_transform_is_valid(P)) return base;
-    if (P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0)) {
-        d.transformed = 0;
-        d.M = d.Minv = P;
-        d.det = MF_R(1.0);
-        return d;
-    }
-    d.transformed = 1;
     d.M = P;
-    d.Minv = mf_mat2_inverse(P);
-    d.det = MF_FABS(mf_mat2_det(P));
+    d.idet = MF_R(1.0) / mf_mat2_det(P);   /* finite and nonzero: P is valid */
+    d.transformed = P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0) ? 0 : 1;
     return d;
 }
 
@@ -1884,13 +2173,12 @@ MF_INLINE mf_ndf mf_gtr_anisotropic(mf_real alpha_x, mf_real alpha_y, mf_real ga
     return mf_transformed(mf_gtr(a, gamma), mf_mat2_make(a / ax, MF_R(0.0), MF_R(0.0), a / ay));
 }
 
-/* D of the untransformed distribution, homogeneous of degree -4 in wm: GGX
- * and Beckmann inline, the other kinds through the dispatch (05_ndf.h). */
+/* D of the untransformed distribution, homogeneous of degree -4 in wm: the
+ * inline kinds (GGX, Beckmann) inline, the others through the dispatch
+ * (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 {
-    if (d->type == MF_NDF_GGX) return mf_ggx_D(d->ax, d->ay, wm);
-    if (d->type == MF_NDF_BECKMANN) return mf_beckmann_D(d->ax, d->ay, wm);
-    return mf__ndf_D(d, wm);
+    return mf__ndf_D_inline(d, wm);
 }
 
 /* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
@@ -1900,7 +2188,7 @@ MF_FORCE_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
     if (!d->transformed) return mf__D_base(d, wm);
     /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m),
      * capped at MF_BIG (a small M makes |M^T m|^-4 overflow) */
-    r = d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
+    r = mf__ndf_det(d) * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
     return mf__cap(r);
 }
 
@@ -1991,15 +2279,14 @@ MF_INLINE mf_mat2 mf_jacobian_2d(mf_map2_fn map, void *ctx, mf_real u, mf_real v
  *             Q the upper tail of P2 = I_w(g-1, 1/2)/2, w = (g-1)/(g-1+mu^2)
  *             (the closed form behind Ribardiere et al. 2017 Eq. 13-15; clamped at 0). */
 
-/* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. GGX and Beckmann
- * inline, the other kinds out of line; transformed kinds at M^-1 w (Eq. 4.4). */
+/* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. The inline
+ * kinds (GGX, Beckmann) inline, the others out of line; transformed kinds at
+ * M^-1 w (Eq. 4.4). */
 MF_FORCE_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
 {
     /* Lambda depends on w only through tan(theta) and phi: no normalization */
-    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
-    if (d->type == MF_NDF_GGX) return mf_ggx_lambda(d->ax, d->ay, w);
-    if (d->type == MF_NDF_BECKMANN) return mf_beckmann_lambda(d->ax, d->ay, w);
-    return mf__ndf_lambda(d, w);
+    if (d->transformed) w = mf_mat2_apply(mf__ndf_Minv(d), w);
+    return mf__ndf_lambda_inline(d, w);
 }
 
 /* Monodirectional masking G1(w, wm) = chi+(w.wm) chi+(w.z) / (1 + Lambda(w)). */
@@ -2025,12 +2312,13 @@ MF_FORCE_INLINE mf_real mf__ggx_G2(mf_real ax, mf_real ay, mf_vec3 wo, mf_vec3 w
 /* 1 / (1 + Lambda(wo) + Lambda(wi)) for wo.z, wi.z > 0 (no facet checks) */
 MF_FORCE_INLINE mf_real mf__G2_up(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
-    /* GGX as the straight path: with another hardware thread busy on the
-     * core, mf_G2 costs 1.24-1.38 instead of 1.36-1.70 times a plain G2
-     * loop without facing tests (bench ggx_G2_generic) */
-    if (MF__LIKELY(d->type == MF_NDF_GGX)) {
+    /* the Trowbridge-Reitz kinds (trait TR: GGX) as the straight path: with
+     * another hardware thread busy on the core, mf_G2 costs 1.24-1.38 instead
+     * of 1.36-1.70 times a plain G2 loop without facing tests (bench
+     * ggx_G2_generic) */
+    if (MF__LIKELY(mf__ndf_tr(d->type))) {
         /* M^-1 fixes z: the transformed directions stay above the horizon */
-        if (d->transformed) { wo = mf_mat2_apply(d->Minv, wo); wi = mf_mat2_apply(d->Minv, wi); }
+        if (d->transformed) { mf_mat2 Mi = mf__ndf_Minv(d); wo = mf_mat2_apply(Mi, wo); wi = mf_mat2_apply(Mi, wi); }
         return mf__ggx_G2(d->ax, d->ay, wo, wi);
     }
     return MF_R(1.0) / (MF_R(1.0) + mf_lambda(d, wo) + mf_lambda(d, wi));
@@ -2049,15 +2337,16 @@ MF_FORCE_INLINE mf_real mf_G2_separable(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi,
 }
 
 /* w . (-E_x, -E_y, 1): the projected area of the mean surface (unnormalized
- * mesonormal) toward w; w.z for every centered distribution. The mean slope of
- * a transformed distribution is M^-T times the base's (Eq. 4.16). */
+ * mesonormal) toward w; w.z for every centred kind (trait CEN). The mean slope
+ * of a transformed distribution is M^-T times the base's (Eq. 4.16). */
 MF_FORCE_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
 {
     mf_real mx, my;
-    if (d->type != MF_NDF_LEADR) return w.z;
-    mx = d->p.leadr.mx; my = d->p.leadr.my;
+    if (!mf__ndf_tilted(d->type)) return w.z;
+    mf__ndf_mean_slope(d, &mx, &my);
     if (d->transformed) {
-        mf_real tx = d->Minv.m00 * mx + d->Minv.m10 * my, ty = d->Minv.m01 * mx + d->Minv.m11 * my;
+        mf_mat2 Mi = mf__ndf_Minv(d);
+        mf_real tx = Mi.m00 * mx + Mi.m10 * my, ty = Mi.m01 * mx + Mi.m11 * my;
         mx = tx; my = ty;
     }
     return w.z - mx * w.x - my * w.y;
@@ -2066,12 +2355,12 @@ MF_FORCE_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
 /* Projected area of the visible microsurface, w.z (1 + Lambda(w)) =
  * integral <w.m> D(m) dm (thesis Eq. 3.9); finite and positive at w.z = 0.
  * For LEADR moments the mean surface is tilted: (w . (-E_x, -E_y, 1)) (1 +
- * Lambda(w)) (LEADR supplement Eq. 9). */
+ * Lambda(w)) (LEADR supplement Eq. 9; trait CEN 0). */
 /* the same for a known lo = Lambda(w) (the samplers share it) */
 MF_FORCE_INLINE mf_real mf__projected_area_l(const mf_ndf *d, mf_vec3 w, mf_real lo)
 {
     mf_real cz;
-    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + lo));
+    if (mf__ndf_tilted(d->type)) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + lo));
     cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
     return mf__cap(cz + cz * lo);
 }
@@ -2118,14 +2407,11 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
-    if (!d->transformed)
-        return d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
-                 : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
+    if (!d->transformed) return mf__ndf_sample_D_inline(d, u1, u2);
     /* M^-T is linear and keeps z: GGX and Beckmann samples are normalized
      * once, after it */
-    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D_dir(d, u1, u2)
-              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D_dir(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
-    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+    m = mf__ndf_sample_D_dir_inline(d, u1, u2);
+    return mf_normalize(mf_mat2_apply_transpose(mf__ndf_Minv(d), m));
 }
 
 /* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
@@ -2137,18 +2423,14 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
+    mf_mat2 Mi;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
-    if (!d->transformed) {
-        if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
-        if (d->type == MF_NDF_GTR) return mf__gtr_sample_visible(d, w, u1, u2);
-        if (d->type == MF_NDF_STUDENT_T) return mf__student_t_sample_visible(d, w, u1, u2);
-        return mf__ndf_sample_visible(d, w, u1, u2);
-    }
+    if (!d->transformed) return mf__ndf_sample_visible_inline(d, w, u1, u2);
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    w = mf_mat2_apply(d->Minv, w);   /* the samplers normalize their view themselves */
-    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
-    else m = mf__ndf_sample_visible(d, w, u1, u2);
-    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+    Mi = mf__ndf_Minv(d);
+    w = mf_mat2_apply(Mi, w);   /* the samplers normalize their view themselves */
+    m = mf__ndf_sample_visible_dir_inline(d, w, u1, u2);
+    return mf_normalize(mf_mat2_apply_transpose(Mi, m));
 }
 
 /* Visible normals as a smooth function of (u1, u2), for quadrature over the
@@ -2159,12 +2441,11 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
 MF_INLINE mf_vec3 mf__sample_visible_smooth(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
-    int gtr = d->type == MF_NDF_GTR;
-    if (!gtr && d->type != MF_NDF_STUDENT_T) return mf_sample_visible(d, w, u1, u2);
+    if (!mf__ndf_iso(d->type)) return mf_sample_visible(d, w, u1, u2);
     if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
-    m = mf__iso_sample_visible_view(d, gtr ? MF_R(1.0) : d->ax, gtr ? MF_R(1.0) : d->ay, w, mf__u01(u1), mf__u01(u2));
-    return d->transformed ? mf_normalize(mf_mat2_apply_transpose(d->Minv, m)) : m;
+    if (d->transformed) w = mf_mat2_apply(mf__ndf_Minv(d), w);
+    m = mf__iso_sample_visible_kind(d, w, mf__u01(u1), mf__u01(u2));
+    return d->transformed ? mf_normalize(mf_mat2_apply_transpose(mf__ndf_Minv(d), m)) : m;
 }
 /* ======================================================================== */
 /* == 11. Specular microfacet BRDF                                          */
@@ -2254,7 +2535,7 @@ MF_FORCE_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
     return (MF_R(1.0) - a2) * s2 / (s2 + a2 * wo.z * wo.z);   /* Eq. 5 */
 }
 /* 1 when the bounded sampler applies to d (untransformed GGX) */
-MF_FORCE_INLINE int mf__bounded_applies(const mf_ndf *d) { return d->type == MF_NDF_GGX && !d->transformed; }
+MF_FORCE_INLINE int mf__bounded_applies(const mf_ndf *d) { return mf__ndf_tr(d->type) && !d->transformed; }
 /* The bounded pdf's denominator 2 (k wo.z + t), t = |(ax wo.x, ay wo.y, wo.z)|
  * (Listing 2): pdf(wi) = D(wm) / that. */
 MF_FORCE_INLINE mf_real mf__ggx_bounded_den(const mf_ndf *d, mf_vec3 wo)
@@ -2624,8 +2905,8 @@ MF_INLINE mf_real mf__leadr_grid_points(int n, mf_real *p1, mf_real *w1)
  * shifted to the slope distribution (Sec. 5.1, Cholesky of the covariance). */
 MF_INLINE mf_vec3 mf__leadr_grid_normal(const mf_ndf *d, mf_real pj, mf_real pk)
 {
-    mf_real sy2 = MF_SQRT(d->p.leadr.vy), r = d->p.leadr.cxy / (d->p.leadr.l00 * sy2);
-    mf_real sx = pj * d->p.leadr.l00 + d->p.leadr.mx;
+    mf_real l00 = MF_SQRT(d->p.leadr.vx), sy2 = MF_SQRT(d->p.leadr.vy), r = d->p.leadr.cxy / (l00 * sy2);
+    mf_real sx = pj * l00 + d->p.leadr.mx;
     mf_real sy = (r * pj + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * pk) * sy2 + d->p.leadr.my;
     return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
 }
@@ -5110,10 +5391,11 @@ MF_INLINE void mf__legendre(mf_real x, mf_real *p)
     for (n = 1; n < MF__GL_N; ++n)
         p[n + 1] = ((mf_real)(2 * n + 1) * x * p[n] - (mf_real)n * p[n - 1]) / (mf_real)(n + 1);
 }
-#define MF__NDF_CASE_D(NAME, name) case MF_NDF_##NAME: return mf__##name##_D(d, wm);
-#define MF__NDF_CASE_LAMBDA(NAME, name) case MF_NDF_##NAME: return mf__##name##_lambda(d, w);
-#define MF__NDF_CASE_SAMPLE_D(NAME, name) case MF_NDF_##NAME: return mf__##name##_sample_D(d, u1, u2);
-#define MF__NDF_CASE_SAMPLE_VISIBLE(NAME, name) case MF_NDF_##NAME: return mf__##name##_sample_visible(d, w, u1, u2);
+#define MF__NDF_CASE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
+#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
+#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
+#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
+#define MF__NDF_CASE_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IFNOT##cen(case MF_NDF_##N: mf__##n##_mean_slope(d, mx, my); return;)
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
@@ -5132,7 +5414,7 @@ MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     switch (d->type) {
     MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_D)
-    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
+    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
 }
 MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
@@ -5142,10 +5424,71 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
 }
+MF_COLD void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_MEAN)
+    default: break;
+    }
+    *mx = *my = MF_R(0.0);
+}
+#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
+MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_PREP)
+    default: return d;
+    }
+}
+#undef MF__NDF_CASE_PREP
 #undef MF__NDF_CASE_D
 #undef MF__NDF_CASE_LAMBDA
 #undef MF__NDF_CASE_SAMPLE_D
 #undef MF__NDF_CASE_SAMPLE_VISIBLE
+#undef MF__NDF_CASE_MEAN
+
+/* The NDF-cos CDF inversion of the kinds of ISO > 0 (07_numeric_vndf.h): tan^2
+ * at mass t from the pole (q = 1 - t beyond), the mass beyond tan2, and the
+ * exponent p of the sampler's substitution; unknown kinds give 0, 0 and 4. */
+#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
+#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
+#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
+MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_TAN2)
+    default: return MF_R(0.0);
+    }
+}
+MF_INLINE mf_real mf__ndf_iso_tail(const mf_ndf *d, mf_real tan2)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_TAIL)
+    default: return MF_R(0.0);
+    }
+}
+MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_VNDF_P)
+    default: return MF_R(4.0);
+    }
+}
+#undef MF__NDF_CASE_TAN2
+#undef MF__NDF_CASE_TAIL
+#undef MF__NDF_CASE_VNDF_P
+
+/* The member (alpha, gamma) of the family of kind `kind` (LTC 1) in *out, 1;
+ * 0 for any other kind (out untouched). */
+#define MF__NDF_CASE_FAMILY(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(case MF_NDF_##N: *out = mf__##n##_family(alpha, gamma); return 1;)
+MF_INLINE int mf__ndf_family(int kind, mf_real alpha, mf_real gamma, mf_ndf *out)
+{
+    switch (kind) {
+    MF__NDF_KINDS(MF__NDF_CASE_FAMILY)
+    default: return 0;
+    }
+}
+#undef MF__NDF_CASE_FAMILY
 /* Beckmann visible slopes for unit roughness and view tan(theta) = tv (view
  * along +x): the slope x along the view has density ~ max(0, 1 - tv x) exp(-x^2),
  * G(x) = erfc(-x)/2 + tv exp(-x^2)/(2 sqrt(pi)) (Heitz & d'Eon 2014 Eq. 9 up to
@@ -5279,34 +5622,34 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
  * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.7-18.4x
  * GGX's Lambda from alpha 0.3 to 1e-4 (double 5-37x: its square roots stay
- * scalar where sqrt may set errno; 4-24x with -fno-math-errno); building the rule
- * makes mf_gtr at non-integer gamma cost about 1 us (Golub-Welsch; integer
- * gamma costs nothing). tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so
- * float never overflows. */
-MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
+ * scalar where sqrt may set errno; 4-24x with -fno-math-errno) with the rule
+ * of an mf_gtr_table; building the rule (Golub-Welsch), which Lambda does at
+ * each call without one, costs about 1 us (integer gamma needs no rule). The
+ * rule's 2 x 24 numbers do not fit in mf_ndf, and no cheaper exact form is
+ * known: the per-call work of any rule whose nodes depend on gamma is
+ * transcendental per node. tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8)
+ * so float never overflows. */
+/* the mixture sum of kind mix (1, 2, 3: components of gamma 2, 3, 4) at tan^2 t2 */
+MF_INLINE mf_real mf__gtr_lambda_mix(const mf_gtr_table *p, int mix, mf_real t2)
 {
-    const mf_ndf_gtr *p = &d->p.gtr;
-    mf_real t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16)), s[4];
+    mf_real s[4];
     int j, k;
-    if (!(t2 > MF_R(0.0))) return MF_R(0.0);
-    if (p->mix == 0)   /* integer gamma: C.8 and C.11 can round to -4e-23 in float */
-        return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
     /* nq is a multiple of 4 (zero-weight padding): four independent sums, one
      * loop per component so that each vectorizes */
     s[0] = s[1] = s[2] = s[3] = MF_R(0.0);
-    if (p->mix == 1) {          /* C.9 (times 2) */
+    if (mix == 1) {          /* C.9 (times 2) */
         for (j = 0; j < p->nq; j += 4)
             for (k = 0; k < 4; ++k) {
                 mf_real bt = p->qb[j + k] * t2;
                 s[k] += p->qw[j + k] * bt / (mf__gtr_sqrt(MF_R(1.0) + bt) + MF_R(1.0));
             }
-    } else if (p->mix == 2) {   /* C.10 */
+    } else if (mix == 2) {   /* C.10 */
         for (j = 0; j < p->nq; j += 4)
             for (k = 0; k < 4; ++k) {
                 mf_real b = p->qb[j + k], bt = b * t2;
                 s[k] += p->qw[j + k] * mf__gtr_lambda3s(b, bt, mf__gtr_sqrt(MF_R(1.0) + bt));
             }
-    } else {                    /* C.11 */
+    } else {                 /* C.11 */
         for (j = 0; j < p->nq; j += 4)
             for (k = 0; k < 4; ++k) {
                 mf_real b = p->qb[j + k], bt = b * t2;
@@ -5314,6 +5657,21 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
             }
     }
     return (s[0] + s[1]) + (s[2] + s[3]);
+}
+MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
+{
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16));
+    int mix = MF__GTR_MIX(d);
+    if (!(t2 > MF_R(0.0))) return MF_R(0.0);
+    if (mix == 0)   /* integer gamma: C.8 and C.11 can round to -4e-23 in float */
+        return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
+    if (p->tab) return mf__gtr_lambda_mix(p->tab, mix, t2);
+    {
+        mf_gtr_table t;   /* no table (mf_gtr): the rule, built here */
+        mf__gtr_mix_init(&t, d->ax, p->gamma);
+        return mf__gtr_lambda_mix(&t, mix, t2);
+    }
 }
 
 /* Gauss-Jacobi rule for the weight (1-x)^ea (1+x)^eb on [-1, 1] by Golub and
@@ -5359,22 +5717,21 @@ MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *
     for (i = 0; i < n; ++i) w[i] *= w[i];
 }
 
-/* The mixture rule of mf__gtr_lambda for p->gamma and alpha a (see there), built
- * in double in every build. With
+/* The mixture rule of mf__gtr_lambda for gamma and alpha a (see there) into
+ * t->nq, qb, qw, built in double in every build. With
  * u = y - log a^2, the smooth factor is, in logs,
  *   (l-1) log(expm1(u)/u) + (m-1) log(expm1(y)/y)      (the exact endpoint factors)
  *   + log of b times the component's normalization N_k(b)^-1 (C.5):
  *     k = 3: (1 + b) / b;  k = 4: (b^2 + b + 1) / b^2  (k = 2: constant).
  * Nodes: ceil(c1 |log a^2| + c0), (c1, c0) = (0.85, 2.5), (1.15, 2.5), (1.3, 3)
  * for k = 2, 3, 4 (see mf__gtr_lambda), at most MF__GTR_NQ. */
-MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
+MF_COLD void mf__gtr_mix_init(mf_gtr_table *p, mf_real a, mf_real gamma)
 {
-    double g = (double)p->gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
+    double g = (double)gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
     double top = -1e300, sum = 0.0, fn;
     int i, n, k;
-    if (g == floor(g)) { p->mix = 0; p->nq = 0; return; }
-    p->mix = g < 2.0 ? 1 : g < 3.0 ? 2 : 3;
-    k = p->mix + 1;                       /* the components' integer gamma */
+    if (g == floor(g)) { p->nq = 0; return; }
+    k = g < 2.0 ? 2 : g < 3.0 ? 3 : 4;    /* the components' integer gamma */
     fn = k == 2 ? ceil(2.5 - 0.85 * L) : k == 3 ? ceil(2.5 - 1.15 * L) :
          ceil(3.0 - 1.3 * L);
     n = fn < MF__GTR_NQ ? (int)fn : MF__GTR_NQ;
@@ -5400,27 +5757,40 @@ MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
     }
 }
 
+/* expm1(kL), expm1(-kL), kL / expm1(kL), -kL / expm1(-kL) (k = 1 - gamma):
+ * the careful inversion's constants (mf_gtr_table holds them) */
+MF_INLINE void mf__gtr_expm1s(mf_real gamma, mf_real L, mf_real *E, mf_real *EM, mf_real *RK, mf_real *RMK)
+{
+    mf_real k = MF_R(1.0) - gamma;
+    *E = MF_EXPM1(k * L);
+    *EM = MF_EXPM1(-k * L);
+    *RK = mf__x_over_expm1(k * L);
+    *RMK = mf__x_over_expm1(-k * L);
+}
+
 /* tan^2(theta) at D-cos mass t from the pole (q = 1 - t beyond): w = sin^2 +
  * a^2 cos^2 has density ~ w^-gamma on [a^2, 1]; log w = lw. MF_BIG at q = 0. */
 MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
-    mf_real L = p->L, uq, ut, lw, llw, c2, s2;
+    mf_real L = p->L, uq, ut, lw, llw, c2, s2, E, EM, RK, RMK;
     if (!(q > MF_R(0.0))) return MF_BIG;
     if (!(t > MF_R(0.0))) return MF_R(0.0);
+    if (p->tab) { E = p->tab->E; EM = p->tab->EM; RK = p->tab->RK; RMK = p->tab->RMK; }
+    else mf__gtr_expm1s(p->gamma, L, &E, &EM, &RK, &RMK);
     /* uq = lw / L and ut = (L - lw) / L add up to 1. Each is computed from
      * its own end (q or t), starting from the smaller mass, which carries the
      * precision (the other is 1 minus it); the other end takes over when its
      * u is the smaller one and its mass keeps log1p away from -1 (in float,
      * t = 1 - 6e-9 rounds to 1 and t EM to -1 at gamma 4, alpha 0.0015). */
     if (q <= t) {
-        uq = q * mf__log1p_over_x(q * p->E) / p->RK;
+        uq = q * mf__log1p_over_x(q * E) / RK;
         ut = MF_R(1.0) - uq;
-        if (uq > MF_R(0.5) && t * p->EM > MF_R(-0.5)) { ut = t * mf__log1p_over_x(t * p->EM) / p->RMK; uq = MF_R(1.0) - ut; }
+        if (uq > MF_R(0.5) && t * EM > MF_R(-0.5)) { ut = t * mf__log1p_over_x(t * EM) / RMK; uq = MF_R(1.0) - ut; }
     } else {
-        ut = t * mf__log1p_over_x(t * p->EM) / p->RMK;
+        ut = t * mf__log1p_over_x(t * EM) / RMK;
         uq = MF_R(1.0) - ut;
-        if (ut > MF_R(0.5) && q * p->E > MF_R(-0.5)) { uq = q * mf__log1p_over_x(q * p->E) / p->RK; ut = MF_R(1.0) - uq; }
+        if (ut > MF_R(0.5) && q * E > MF_R(-0.5)) { uq = q * mf__log1p_over_x(q * E) / RK; ut = MF_R(1.0) - uq; }
     }
     lw = L * uq; llw = L * ut;
     c2 = uq / mf__x_over_expm1(lw);            /* cos^2 r(L)^-1 */
@@ -5441,6 +5811,69 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
     return lwL * mf__x_over_expm1(k * L) / mf__x_over_expm1(k * L * lwL);
 }
 
+/* The mixture envelope of mf__gtr_sample_visible (mode 1: gamma in (0, 2),
+ * alpha <= 1/4). Term j has the density C_j z^(q_j - 1) on its piece [lo, hi]
+ * of the ends 0, a^2/4, 4a^2, 1/4, 4, inf (pieces 0, 1, 1, 2, 2, 3, 4 for j =
+ * 0..6; q_j = 2, 3/2, 2, 1, 3/2, 1/2, 0 minus gamma; log C_j = -L, -L/2 -
+ * log 2, 0, -log 2, 0 by piece, L = log a^2): vs[j] = its mass C_j z_e^q k_j,
+ * vs[7 + j] = kk_j = -k_j (q > 0, z_e = hi) or k_j (q <= 0, z_e = lo), k_j =
+ * s_j / |q_j|, vs[13 + j] = s_j = -expm1(-|q_j| log(hi/lo)) (1 on the two
+ * unbounded pieces). Each C_j z_e^q_j is a product of A = a^(2 (1 - gamma)),
+ * a, 4^gamma and powers of 2, and each 1 - s_j one of 16^gamma, A and a: no
+ * exponential but s_j's expm1 where 1 - s_j > 1/2 (there 1 minus the product
+ * would lose s_j's relative precision). */
+/* s_j and k_j of a bounded piece from P = 1 - s_j = exp(-|q| ll), iaq = 1/|q|
+ * (0 at q = 0), ll = log(hi/lo); where P > 1/2, s_j from its own expm1 */
+MF_INLINE void mf__gtr_piece(mf_real P, mf_real q, mf_real iaq, mf_real ll, mf_real *sj, mf_real *kj)
+{
+    if (!(P > MF_R(0.5))) { *sj = MF_R(1.0) - P; *kj = *sj * iaq; return; }
+    if (q == MF_R(0.0)) { *sj = MF_R(0.0); *kj = ll; return; }   /* the limit q -> 0 */
+    *sj = -MF_EXPM1(-MF_FABS(q) * ll);
+    *kj = *sj * iaq;
+}
+MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19])
+{
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real g = p->gamma, a = d->ax, A = p->A, G4 = p->v0, aA = a * A, r = MF_R(1.0) / (G4 * aA);
+    mf_real iG4 = r * aA, iA = r * G4 * a, iaA = r * G4, G16 = G4 * G4, iG16 = iG4 * iG4;
+    mf_real ln4 = MF_R(1.3862943611198906), ll16 = MF_R(2.0) * ln4, llm = -ln4 - (p->L + ln4);   /* log(hi/lo) of pieces 1, 3 and 2 */
+    mf_real q0 = MF_R(2.0) - g, q1 = MF_R(1.5) - g, q3 = MF_R(1.0) - g, q5 = MF_R(0.5) - g;   /* q_j = c_j - gamma */
+    mf_real i0 = MF_R(1.0) / q0, i1 = q1 != MF_R(0.0) ? MF_R(1.0) / MF_FABS(q1) : MF_R(0.0);
+    mf_real i3 = q3 != MF_R(0.0) ? MF_R(1.0) / MF_FABS(q3) : MF_R(0.0), i5 = q5 != MF_R(0.0) ? MF_R(1.0) / MF_FABS(q5) : MF_R(0.0);
+    mf_real k;
+    /* unbounded pieces: s = 1, k = 1 / |q|; vs[j] = C_j z_e^q_j k_j */
+    vs[0] = A * G4 * MF_R(0.0625) * i0; vs[7] = -i0;
+    k = MF_R(1.0) / g; vs[6] = iG4 * k; vs[13] = k;
+    /* bounded pieces: 1 - s_j = 16^-|q| on pieces 1 and 3, (16 a^2)^|q| on piece 2 */
+    mf__gtr_piece(G16 * MF_R(0.00390625), q0, i0, ll16, &vs[15], &k);
+    vs[2] = MF_R(8.0) * aA * iG4 * k; vs[9] = -k;
+    if (q1 > MF_R(0.0)) {
+        mf__gtr_piece(G16 * MF_R(0.015625), q1, i1, ll16, &vs[14], &k);
+        vs[1] = MF_R(4.0) * A * iG4 * k; vs[8] = -k;
+        mf__gtr_piece(MF_R(64.0) * aA * iG16, q1, i1, llm, &vs[17], &k);
+        vs[4] = G4 * MF_R(0.125) * k; vs[11] = -k;
+    } else {
+        mf__gtr_piece(MF_R(64.0) * iG16, q1, i1, ll16, &vs[14], &k);
+        vs[1] = A * G4 * MF_R(0.0625) * k; vs[8] = k;
+        mf__gtr_piece(G16 * iaA * MF_R(0.015625), q1, i1, llm, &vs[17], &k);
+        vs[4] = MF_R(8.0) * aA * iG4 * k; vs[11] = k;
+    }
+    if (q3 > MF_R(0.0)) {
+        mf__gtr_piece(MF_R(16.0) * A * iG16, q3, i3, llm, &vs[16], &k);
+        vs[3] = G4 * MF_R(0.25) * k; vs[10] = -k;
+    } else {
+        mf__gtr_piece(G16 * iA * MF_R(0.0625), q3, i3, llm, &vs[16], &k);
+        vs[3] = MF_R(4.0) * A * iG4 * k; vs[10] = k;
+    }
+    if (q5 > MF_R(0.0)) {
+        mf__gtr_piece(G16 * MF_R(0.25), q5, i5, ll16, &vs[18], &k);
+        vs[5] = iG4 * k; vs[12] = -k;
+    } else {
+        mf__gtr_piece(MF_R(4.0) * iG16, q5, i5, ll16, &vs[18], &k);
+        vs[5] = G4 * MF_R(0.25) * k; vs[12] = k;
+    }
+}
+
 /* Visible normals (density D_w), exact, by one of (mf__gtr_sampler_init
  * chooses):
  * - gamma = 2, gamma = 0, alpha = 1: GGX of alpha, 1, 1 (the same D);
@@ -5456,7 +5889,7 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
  *   within 4/5 on pieces split at a^2/4, 4a^2 and 1/4, 4), times 1 + Lambda_b
  *   = (1 + sqrt(1 + b t^2))/2 <= its value at b = 5a^2/4 on [0, a^2/4],
  *   1 + Lambda_{a^2} + (t/2) sqrt z up to 1/4 (b <= a^2 + z), 1 + Lambda_1
- *   beyond (t = tan theta_w): seven power laws (mf__gtr_sampler_init), each
+ *   beyond (t = tan theta_w): seven power laws (mf__gtr_envelope), each
  *   inverted in closed form, log z = log z_e + kk u log1p(-u s) / (-u s);
  * - otherwise (gamma in (2, 4], or below 2 with K <= 1.5): rejection from
  *   GGX's VNDF of alpha_p (mf__gtr_sampler_init), accepting with D / (K D_GGX)
@@ -5473,28 +5906,30 @@ MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real
 MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
-    const mf_real *vs = p->vs;
     mf_real a2 = d->ax * d->ax, g = p->gamma;
     unsigned int st;
     mf_real v1 = u1, v2 = u2;   /* the current proposal's uniforms */
-    int it = 0, fresh = 1;
+    int it = 0, fresh = 1, vmode = MF__GTR_VMODE(d);
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    if (p->vmode == 0) return mf_ggx_sample_visible(vs[0], vs[0], w, u1, u2);
+    if (vmode == 0) return mf_ggx_sample_visible(p->v0, p->v0, w, u1, u2);
     if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     st = mf__stream_seed(u1, u2);
-    if (p->vmode == 2) {
-        mf_real ap = vs[0], ap2 = ap * ap;
+    if (vmode == 2) {
+        mf_real ap = p->v0, ap2 = ap * ap;
         m = mf_ggx_sample_visible(ap, ap, w, u1, u2);
         for (it = 0; it < 64; ++it) {
             /* D / (K D_GGX) = cK ((1+x)/(a^2+x))^(gamma-2) ((ap^2+x)/(a^2+x))^2, x = s2/c2 */
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
-            r = vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
+            r = p->v1 * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
             if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
             mf__stream_next2(&st, &v1, &v2);
             m = mf_ggx_sample_visible(ap, ap, w, v1, v2);
         }
     } else {
-        mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
+        mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax, env[19];
+        const mf_real *vs = env;
+        if (p->tab) vs = p->tab->vs;   /* built once, by the same function */
+        else mf__gtr_envelope(d, env);
         t4 = s2 < w.z * w.z / (MF_EPS * MF_EPS) ? s2 / (w.z * w.z) : MF_R(1.0) / (MF_EPS * MF_EPS);   /* t^2 */
         th = MF_R(0.5) * MF_SQRT(t4);                                                  /* t/2, off the c0 path */
         /* 1 + Lambda_b at b = a^2, 5a^2/4 and 1 */
@@ -5557,9 +5992,9 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     const mf_ndf_gtr *p = &d->p.gtr;
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t, k = MF_R(1.0) - p->gamma;
     mf_real a2 = d->ax * d->ax, w, n, e, tan2;
-    if (p->vmode == 0) return mf__gtr_ggx(p->vs[0], 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), t, u2);
-    /* A = vs[19] = exp(kL), not E + 1: float's E rounds near -1 at small alpha */
-    w = k != MF_R(0.0) ? MF_POW(p->vs[19] * q + t, p->vs[20]) : MF_EXP(p->L * q);
+    if (MF__GTR_VMODE(d) == 0) return mf__gtr_ggx(p->v0, 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), t, u2);
+    /* A = exp(kL), not E + 1: float's E rounds near -1 at small alpha */
+    w = k != MF_R(0.0) ? MF_POW(p->A * q + t, MF_R(1.0) / k) : MF_EXP(p->L * q);
     n = w - a2; e = MF_R(1.0) - w;
     /* (2/|k| + 2 + |L|) (w/n + w/e) <= 128, without dividing by k */
     if (n > MF_R(0.0) && e > MF_R(0.0) &&
@@ -5570,24 +6005,18 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), tan2, u2);
 }
 
-/* The visible sampler's mode and constants (see mf__gtr_sample_visible);
- * vs[19] = a^(2k) = exp(kL) and vs[20] = 1/k (k = 1 - gamma, 0 at gamma 1)
- * for mf__gtr_sample_D. Mixture: term j has the density C_j z^(q_j - 1) on
- * its piece [lo, hi]; vs[j] = its mass C_j z_e^q k_j, vs[7 + j] = kk_j =
- * -k_j (q > 0, z_e = hi) or k_j (q <= 0, z_e = lo), k_j = s_j / |q_j|,
- * vs[13 + j] = s_j = -expm1(-|q_j| log(hi/lo)) (1 on the two unbounded
- * pieces). Rejection: vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max
- * of the ratio at x = 0, infinity and its one stationary point. */
-MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
+/* The visible sampler's mode (returned) and constants (see
+ * mf__gtr_sample_visible). Rejection (2): v0 = alpha_p, v1 = N pi /
+ * (alpha_p^2 K), K = max of the ratio at x = 0, infinity and its one
+ * stationary point. Mixture (1): v0 = 4^gamma, from which mf__gtr_envelope
+ * derives the envelope. GGX (0): v0 = its alpha. */
+MF_COLD int mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
 {
     mf_real g = p->gamma, L = p->L, a2 = a * a, npi = p->norm * MF_PI;
     mf_real ap2, c1, c0, l0, li, lk, x;
-    int j;
-    p->vmode = 0;
-    p->vs[0] = g == MF_R(2.0) ? a : MF_R(1.0);
-    if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return;
-    p->vs[19] = MF_EXP((MF_R(1.0) - g) * L);
-    p->vs[20] = g != MF_R(1.0) ? MF_R(1.0) / (MF_R(1.0) - g) : MF_R(0.0);
+    p->v0 = g == MF_R(2.0) ? a : MF_R(1.0);
+    p->v1 = MF_R(0.0);
+    if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return 0;
     /* GGX proposal: alpha_p^2 = a^gamma below gamma 2 (it minimizes K there),
      * a^2 / (1 + (gamma - 2)(1 - a^2)) above; K = the largest of the ratio at
      * x = 0 (npi ap^2 a^(-2g)), infinity (npi / ap^2) and its one stationary
@@ -5601,41 +6030,52 @@ MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
         lk = mf_max(lk, li + (g - MF_R(2.0)) * MF_LOG1P(x) + MF_R(2.0) * MF_LOG1P(x / ap2) - g * MF_LOG(a2 + x) + MF_R(2.0) * MF_LOG(ap2));
     /* K <= 1.5 below gamma 2: alpha >~ 0.15; the mixture's pieces need 4a^2 <= 1/4 */
     if (g > MF_R(2.0) || lk < MF_LOG(MF_R(1.5)) || a > MF_R(0.25)) {
-        p->vmode = 2;
-        p->vs[0] = MF_SQRT(ap2);
-        p->vs[1] = npi / (ap2 * MF_EXP(lk));
-        return;
+        p->v0 = MF_SQRT(ap2);
+        p->v1 = npi / (ap2 * MF_EXP(lk));
+        return 2;
     }
-    p->vmode = 1;
-    for (j = 0; j < 7; ++j) {
-        /* piece pc = (j+1)/2 of the ends 0, a^2/4, 4a^2, 1/4, 4, inf (in logs); q_j; log C_j */
-        mf_real ln4 = MF_R(1.3862943611198906), ends[6], q, lo, hi, ll, sj, kj, lc, le;
-        int pc = j == 6 ? 4 : (j + 1) >> 1;
-        ends[0] = -MF_BIG; ends[1] = L - ln4; ends[2] = L + ln4; ends[3] = -ln4; ends[4] = ln4; ends[5] = MF_BIG;
-        q = (j == 0 || j == 2 ? MF_R(2.0) : j == 1 || j == 4 ? MF_R(1.5) : j == 3 ? MF_R(1.0) : j == 5 ? MF_R(0.5) : MF_R(0.0)) - g;
-        lo = ends[pc]; hi = ends[pc + 1];
-        lc = pc == 0 ? -L : pc == 1 ? -MF_R(0.5) * L - MF_LOG(MF_R(2.0)) : pc == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
-        if (pc == 0 || pc == 4) { sj = MF_R(1.0); kj = MF_R(1.0) / MF_FABS(q); }
-        else {
-            ll = hi - lo;
-            sj = -MF_EXPM1(-MF_FABS(q) * ll);
-            kj = ll / mf__x_over_expm1(-MF_FABS(q) * ll);
-        }
-        le = q > MF_R(0.0) ? hi : lo;
-        p->vs[j] = MF_EXP(lc + q * le) * kj;
-        p->vs[7 + j] = q > MF_R(0.0) ? -kj : kj;
-        if (j >= 1 && j <= 5) p->vs[13 + j] = sj;
-    }
+    p->v0 = MF_EXP(g * MF_R(1.3862943611198906));
+    return 1;
 }
+
+MF_COLD mf_result mf_gtr_table_build(mf_gtr_table *t, mf_real alpha, mf_real gamma)
+{
+    mf_ndf d;
+    int i;
+    if (!t) return MF_ERROR_INVALID_ARGUMENT;
+    d = mf_gtr(alpha, gamma);
+    t->alpha = d.ax;
+    t->gamma = d.p.gtr.gamma;
+    mf__gtr_mix_init(t, t->alpha, t->gamma);
+    mf__gtr_expm1s(t->gamma, d.p.gtr.L, &t->E, &t->EM, &t->RK, &t->RMK);
+    if (MF__GTR_VMODE(&d) == 1) mf__gtr_envelope(&d, t->vs);
+    else for (i = 0; i < 19; ++i) t->vs[i] = MF_R(0.0);
+    return MF_SUCCESS;
+}
+
+MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_table *t)
+{
+    if ((MF__GTR_MIX(d) == 0 && MF__GTR_VMODE(d) != 1) || d->p.gtr.tab) return d;
+    mf_gtr_table_build(t, d->ax, d->p.gtr.gamma);
+    *copy = *d;
+    copy->p.gtr.tab = t;
+    return copy;
+}
+MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+{
+    *mx = d->p.leadr.mx; *my = d->p.leadr.my;
+}
+
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
 {
     const mf_ndf_leadr *p = &d->p.leadr;
-    mf_real sx, sy, q, z2;
+    mf_real sx, sy, q, z2, ixx, iyy, ixy;
     if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
     sx = -wm.x / wm.z - p->mx;
     sy = -wm.y / wm.z - p->my;
-    q = p->ixx * sx * sx + MF_R(2.0) * p->ixy * sx * sy + p->iyy * sy * sy;
+    mf__leadr_inverse(p, &ixx, &iyy, &ixy);
+    q = ixx * sx * sx + MF_R(2.0) * ixy * sx * sy + iyy * sy * sy;
     if (!(q >= MF_R(0.0) && q < MF_R(160.0))) return MF_R(0.0);   /* q < 0: float overflow */
     z2 = wm.z * wm.z;
     /* capped: a mean slope far from the axis keeps q small at grazing wm,
@@ -5647,11 +6087,13 @@ MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
 MF_COLD mf_vec3 mf__leadr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     const mf_ndf_leadr *p = &d->p.leadr;
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), l00, l10, l11;
     mf_real n1 = MF_R(1.4142135623730951) * mf_erfinv(MF_R(2.0) * t - MF_R(1.0));
     mf_real n2 = MF_R(1.4142135623730951) * mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
-    mf_real sx = p->mx + p->l00 * n1;
-    mf_real sy = p->my + p->l10 * n1 + p->l11 * n2;
+    mf_real sx, sy;
+    mf__leadr_chol(p, &l00, &l10, &l11);
+    sx = p->mx + l00 * n1;
+    sy = p->my + l10 * n1 + l11 * n2;
     return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
 }
 
@@ -5680,9 +6122,10 @@ MF_COLD mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w)
  * across n stays standard normal. */
 MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
-    mf_real l00 = d->p.leadr.l00, l10 = d->p.leadr.l10, l11 = d->p.leadr.l11;
-    mf_real nx = l00 * w.x + l10 * w.y, ny = l11 * w.y, k = MF_SQRT(nx * nx + ny * ny);
-    mf_real cnum = w.z - d->p.leadr.mx * w.x - d->p.leadr.my * w.y, x, y, ex = MF_R(1.0), ey = MF_R(0.0), z1, z2, sx, sy;
+    mf_real l00, l10, l11, nx, ny, k, cnum, x, y, ex = MF_R(1.0), ey = MF_R(0.0), z1, z2, sx, sy;
+    mf__leadr_chol(&d->p.leadr, &l00, &l10, &l11);
+    nx = l00 * w.x + l10 * w.y; ny = l11 * w.y; k = MF_SQRT(nx * nx + ny * ny);
+    cnum = w.z - d->p.leadr.mx * w.x - d->p.leadr.my * w.y;
     if (w.z < MF_R(0.0) || !(cnum > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     if (k > MF_R(1e-30) * cnum) { ex = nx / k; ey = ny / k; }
     /* unit-Beckmann units (exp(-x^2)): z = sqrt(2) x, bound c = cnum / k */
@@ -5810,7 +6253,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (!(m.z > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
             /* (1+v)^2 (1+v/g1)^-g = (g1 (c2+q)/(gc+q))^2 (gc/(gc+q))^(g-2), v = q/c2 */
             r = g1 * (c2 + q) / (gc + q);
-            r = d->p.student_t.vk * r * r * MF_POW(gc / (gc + q), g - MF_R(2.0));
+            r = d->p.student_t.vs[0] * r * r * MF_POW(gc / (gc + q), g - MF_R(2.0));
             if (mf__stream_next(&st) < r) break;
         }
     } else {
@@ -5825,12 +6268,13 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
         tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
             /* the term from one uniform, the place in it from the next (in [0, 1)) */
-            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n;
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n, kj, kk, sj;
             int k;
             for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
+            mf__student_t_term(g, k, &kj, &kk, &sj);
             /* log z = log z_e + kk u log1p(-u s)/(-u s); z_e = 1/4 (terms 0, 1, 3), 4 (2, 4) */
             lz = (k == 2 || k == 4 ? MF_R(1.3862944) : MF_R(-1.3862944)) +
-                 vs[5 + k] * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * vs[8 + k] : -u);
+                 kk * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * sj : -u);
             lz = mf_max(lz, lzmin);
             iz = MF_EXP(-lz);                       /* 1/z */
             rho = MF_SQRT(iz);
@@ -5853,29 +6297,26 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     return mf__iso_sample_visible_view(d, ax, ay, w, u1, u2);
 }
 
-/* The mixture envelope of mf__student_t_sample_visible (gamma < 2): term j
- * has the density C_j z^(q_j - 1) on its piece [lo, hi] ((0, 1/4] twice,
- * [1/4, 4] twice, [4, inf); q = g-1, g-3/2, g-3/2, g-2, g-2; C = 1, 1, 1/2,
- * 1/2, 1); vs[j] = its mass C_j z_e^q k_j, vs[5 + j] = kk_j = -k_j (q > 0,
- * z_e = hi) or k_j (q < 0, z_e = lo), k_j = s_j / |q_j|, vs[10], vs[11] =
- * s_j = -expm1(-|q_j| log 16) of terms 2 and 3 (1 on the others). */
+/* The visible sampler's constants (see mf__student_t_sample_visible). gamma
+ * > 2: vs[0] = 1/K, K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v
+ * = 1. gamma < 2, the mixture envelope: term j has the density C_j z^(q_j -
+ * 1) on its piece [lo, hi] ((0, 1/4] twice, [1/4, 4] twice, [4, inf); q =
+ * g-1, g-3/2, g-3/2, g-2, g-2; C = 1, 1, 1/2, 1/2, 1); vs[j] = its mass C_j
+ * z_e^q k_j (z_e = hi where q > 0, else lo), k_j = s_j / |q_j|, s_j =
+ * -expm1(-|q_j| log 16) on [1/4, 4] (1 on the others); the sampler takes k_j
+ * and s_j of the term it draws from mf__student_t_term. */
 MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p)
 {
     mf_real g = p->gamma, ln4 = MF_R(1.3862943611198906);
     int j;
-    for (j = 0; j < 12; ++j) p->vs[j] = MF_R(0.0);
+    for (j = 0; j < 5; ++j) p->vs[j] = MF_R(0.0);
+    if (g > MF_R(2.0)) p->vs[0] = MF_R(0.25) * MF_EXP(-g * MF_LOG((g - MF_R(1.0)) / g));
     if (!(g < MF_R(2.0))) return;
     for (j = 0; j < 5; ++j) {
-        mf_real q = g - (j == 0 ? MF_R(1.0) : j < 3 ? MF_R(1.5) : MF_R(2.0)), aq = MF_FABS(q), sj = MF_R(1.0), kj, le, lc;
+        mf_real kj, kk, sj, q = mf__student_t_term(g, j, &kj, &kk, &sj), le, lc;
         lc = j == 2 || j == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
         le = j == 2 || j == 4 ? ln4 : -ln4;
-        if (j == 2 || j == 3) {                 /* [1/4, 4]: log(hi/lo) = log 16 */
-            sj = -MF_EXPM1(-aq * MF_R(2.0) * ln4);
-            kj = MF_R(2.0) * ln4 / mf__x_over_expm1(-aq * MF_R(2.0) * ln4);
-            p->vs[8 + j] = sj;
-        } else kj = MF_R(1.0) / aq;
         p->vs[j] = MF_EXP(lc + q * le) * kj;
-        p->vs[5 + j] = q > MF_R(0.0) ? -kj : kj;
     }
 }
 /* Index i of the interval [x[i], x[i+1]] holding v (clamped to 0 .. n-2): direct
@@ -6243,26 +6684,18 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
      * and atan2 must give the D lookup an angle below the last node */
     return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(8.0) * MF_EPS)));
 }
-/* The NDF-CDF inversion of an isotropic kind sampled numerically (GTR with
- * its alpha; Student-t with unit roughness, stretched by the caller): t is the
- * D-cos mass from the pole (theta = 0) to theta, q = 1 - t the mass beyond;
- * both are passed so each end stays accurate. Returns tan^2(theta). */
-MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
-{
-    return d->type == MF_NDF_GTR ? mf__gtr_tan2(d, t, q) : mf__student_t_tan2(d, t, q);
-}
+/* The NDF-CDF inversion of an isotropic kind sampled numerically (trait ISO
+ * of 05_ndf.h; GTR with its alpha, Student-t with unit roughness, stretched
+ * by the caller): t is the D-cos mass from the pole (theta = 0) to theta, q =
+ * 1 - t the mass beyond; both are passed so each end stays accurate. Returns
+ * tan^2(theta). */
+MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q) { return mf__ndf_iso_tan2(d, t, q); }
 /* Mass of D cos beyond the polar angle whose tan^2 is tan2 (inverse of the above). */
-MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2)
-{
-    return d->type == MF_NDF_GTR ? mf__gtr_tail(d, tan2) : mf__student_t_tail(d, tan2);
-}
+MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2) { return mf__ndf_iso_tail(d, tan2); }
 /* Exponent p of the substitution q = qc (1 - s^2)^p: it must cancel the tail
  * tan(theta) ~ q^-beta (GTR: beta = 1/2 at every gamma; Student-t:
  * beta = 1/(2 gamma - 2)), p = 2 / (1 - beta). */
-MF_INLINE mf_real mf__iso_p(const mf_ndf *d)
-{
-    return d->type == MF_NDF_GTR ? MF_R(4.0) : d->p.student_t.vndf_p;
-}
+MF_INLINE mf_real mf__iso_p(const mf_ndf *d) { return mf__ndf_iso_p(d); }
 
 /* State of the numerical VNDF sampler for one view (see mf__iso_sample_visible). */
 typedef struct mf__iso_vis {
@@ -6386,7 +6819,7 @@ MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real
 {
     mf_real cv, sv, cp, sp;
     mf_vec3 m;
-    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (w.z < MF_R(0.0) || !mf__ndf_iso(d->type)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
     m = mf__iso_sample_visible(d, cv, sv, u1, u2);
     return mf_normalize(mf_vec3_make(ax * (cp * m.x - sp * m.y), ay * (sp * m.x + cp * m.y), m.z));
@@ -8897,11 +9330,13 @@ MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_
                            mf_real cos_theta_o, const mf_real *guess)
 {
     mf__fit_ctx c;
+    mf__ndf_prep pr;
     mf_real ct, st, sum = MF_R(0.0), fres = MF_R(0.0), p[3];
     mf_vec3 avg = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     int i, j, n1 = 32, k;
     if (!out || (!d && !brdf) || !(cos_theta_o > MF_R(0.0)) || !(cos_theta_o <= MF_R(1.0)))
         return MF_ERROR_INVALID_ARGUMENT;
+    if (d) d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     ct = cos_theta_o; st = MF_SQRT(mf_max(MF_R(1.0) - ct * ct, MF_R(0.0)));
     c.d = d; c.brdf = brdf; c.ctx = ctx; c.wo = mf_vec3_make(st, MF_R(0.0), ct);
     c.n = n1 * n1;
@@ -14341,7 +14776,10 @@ static int mf__ms_ndf_ok(const mf_ndf *d)
     mf_real v;
     if (!(d->ax > MF_R(0.0) && d->ax < MF_BIG) || !(d->ay > MF_R(0.0) && d->ay < MF_BIG)) return 0;
     if (d->transformed && !mf_transform_is_valid(d->M)) return 0;
-    if (d->type == MF_NDF_LEADR && (d->p.leadr.mx != MF_R(0.0) || d->p.leadr.my != MF_R(0.0))) return 0;
+    if (mf__ndf_tilted(d->type)) {
+        mf__ndf_mean_slope(d, &m.x, &m.y);
+        if (m.x != MF_R(0.0) || m.y != MF_R(0.0)) return 0;
+    }
     m = mf_sample_D(d, MF_R(0.3), MF_R(0.2));
     v = mf_D(d, m);
     return m.z > MF_R(0.0) && m.z <= MF_R(1.0) && MF_FABS(m.x) <= MF_R(1.0) && MF_FABS(m.y) <= MF_R(1.0) &&
@@ -15655,8 +16093,10 @@ MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_r
 
 MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
 {
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
+    mf__ndf_prep pr;
+    if (!d || !mf__ndf_known(d->type) || panels < 1 || panels > 64) return MF_R(0.0);
     if (!(wo.z > MF_R(0.0)) || !(wo.z <= MF_R(1.0)) || !(wo.x == wo.x) || !(wo.y == wo.y)) return MF_R(0.0);
+    d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels);
 }
 
@@ -15725,9 +16165,7 @@ static inline mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
 MF_INLINE int mf__energy_kind(const mf_ndf *d)
 {
     if (!d || d->transformed) return -1;
-    if (d->type == MF_NDF_GGX) return 0;
-    if (d->type == MF_NDF_BECKMANN) return 1;
-    return -1;
+    return mf__ndf_energy_table(d->type) - 1;   /* trait ETAB */
 }
 
 MFDEF mf_real mf_albedo(const mf_ndf *d, mf_vec3 wo)
@@ -15746,10 +16184,10 @@ MFDEF mf_real mf_albedo_average(const mf_ndf *d)
 {
     int k = mf__energy_kind(d), i, j, n_phi;
     double e[17], sum = 0.0;
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT) return MF_R(0.0);
+    if (!d || !mf__ndf_known(d->type)) return MF_R(0.0);
     if (k >= 0) return mf__energy_lookup(k, MF_SQRT(d->ax * d->ay), MF_R(-1.0));
     /* other kinds: 17 nodes in x (mu = x^2), 8 azimuths unless isotropic */
-    n_phi = (!d->transformed && d->ax == d->ay && d->type != MF_NDF_LEADR && d->type != MF_NDF_TABULATED) ? 1 : 8;
+    n_phi = (!d->transformed && d->ax == d->ay && mf__ndf_axes(d->type)) ? 1 : 8;
     for (j = 0; j < n_phi; ++j) {
         mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
         for (i = 0; i < 17; ++i) e[i] = (double)mf_albedo_integrate(d, mf__energy_node_dir(i, 17, phi), 1);
@@ -15794,7 +16232,7 @@ MFDEF mf_result mf_albedo_table_build(mf_albedo_table *t, const mf_ndf *d, int n
     int i, j;
     double *row, sum = 0.0;
     if (t) { t->E = 0; t->n_mu = t->n_phi = 0; t->E_avg = MF_R(0.0); }
-    if (!t || !d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || n_mu < 2 || n_mu > 1024 ||
+    if (!t || !d || !mf__ndf_known(d->type) || n_mu < 2 || n_mu > 1024 ||
         n_phi < 1 || n_phi > 1024 || panels < 1 || panels > 64)
         return MF_ERROR_INVALID_ARGUMENT;
     t->E = (mf_real *)MF_MALLOC(sizeof(mf_real) * (size_t)n_mu * (size_t)n_phi);
@@ -15855,7 +16293,9 @@ MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_v
 /* ---- rough dielectrics */
 MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels)
 {
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
+    mf__ndf_prep pr;
+    if (!d || !mf__ndf_known(d->type) || panels < 1 || panels > 64) return MF_R(0.0);
+    d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(wo.x == wo.x) || !(wo.y == wo.y) || !(MF_FABS(wo.z) <= MF_R(1.0))) return MF_R(0.0);
     if (!(wo.z != MF_R(0.0))) return MF_R(0.0);
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; }   /* as mf_dielectric_sample */
@@ -15876,7 +16316,7 @@ MFDEF mf_result mf_dielectric_ms_table_build(mf_dielectric_ms_table *t, const mf
     int i, s;
     double *row, avg[2], x, y;
     if (t) { t->E = 0; t->n_mu = 0; t->E1_avg = t->E2_avg = t->x = t->y = t->eta = MF_R(0.0); }
-    if (!t || !d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || n_mu < 2 || n_mu > 1024 ||
+    if (!t || !d || !mf__ndf_known(d->type) || n_mu < 2 || n_mu > 1024 ||
         panels < 1 || panels > 64 || !(eta > MF_R(1e-3)) || !(eta < MF_R(1e3)))
         return MF_ERROR_INVALID_ARGUMENT;
     t->E = (mf_real *)MF_MALLOC(sizeof(mf_real) * 2 * (size_t)n_mu);

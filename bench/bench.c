@@ -169,6 +169,17 @@ static void bench_tabulated(void)
     for (k = 0; k < 3; ++k) mf_tabulated_release(&tabs[k]);
 }
 
+/* GTR with its Lambda rule built once (mf_gtr_table; mf_gtr by value builds
+ * it at each call of Lambda at a non-integer gamma): a ring of 16 tables */
+static mf_ndf gtr_tab(mf_real alpha, mf_real gamma)
+{
+    static mf_gtr_table t[16];
+    static int next = 0;
+    mf_gtr_table *p = &t[next++ & 15];
+    mf_gtr_table_build(p, alpha, gamma);
+    return mf_gtr_table_ndf(p);
+}
+
 /* ---- Inverse Bin Map ---- */
 /* A car-paint flake map (thesis Sec. 5.5.4, Fig. 5.10): Voronoi flakes around
  * a jittered grid of `cell` texels, tiling, each flake's normal drawn from
@@ -328,7 +339,7 @@ static void bench_ibm(void)
     const int n = 2048, nq = 256;
     const double alphas[4] = { 0.0025, 0.01, 0.04, 0.16 }, texels[4] = { 1.0, 1e2, 1e4, 1e6 };
     mf_real *nm = ibm_flake_map(n, 6, 0.002);
-    mf_ndf gtr = mf_gtr(MF_R(0.002), MF_R(1.5));
+    mf_ndf gtr = gtr_tab(MF_R(0.002), MF_R(1.5));
     mf_footprint fq[nq];
     mf_vec3 wo[nq], wi[nq];
     int a, k, q;
@@ -521,7 +532,7 @@ static double b_brdf(const mf_ndf *d) { LOOP(mf_brdf(d, g_wo[i], g_wi[i])); }
 static double b_brdf_pdf(const mf_ndf *d) { LOOP(mf_brdf_pdf(d, g_wo[i], g_wi[i])); }
 /* construction, per call: GTR at non-integer gamma builds its Lambda rule */
 static double b_make_ggx(const mf_ndf *d) { (void)d; LOOP(mf_ggx(MF_R(0.01) + g_u1[i], MF_R(0.01) + g_u1[i]).ax); }
-static double b_make_gtr(const mf_ndf *d) { (void)d; LOOP(mf_gtr(MF_R(0.01) + g_u1[i], MF_R(0.01) + MF_R(3.9) * g_u2[i]).p.gtr.qw[0]); }
+static double b_make_gtr(const mf_ndf *d) { (void)d; LOOP(mf_gtr(MF_R(0.01) + g_u1[i], MF_R(0.01) + MF_R(3.9) * g_u2[i]).p.gtr.A); }
 static double b_brdf_sample(const mf_ndf *d)
 {
     double s = 0.0;
@@ -819,14 +830,17 @@ static void bench_gtr_lambda(void)
     int i, j, r;
     for (i = 0; i < 4; ++i)
         for (j = 0; j < 4; ++j) {
-            mf_ndf d = mf_gtr((mf_real)as[i], (mf_real)gs[j]);
+            mf_gtr_table tab;
+            mf_ndf d;
             double t = 1e300, gl = 1e300, x;
+            mf_gtr_table_build(&tab, (mf_real)as[i], (mf_real)gs[j]);   /* the rule built once */
+            d = mf_gtr_table_ndf(&tab);
             for (r = 0; r < 3; ++r) {   /* interleaved: both see the same machine state */
                 x = run(b_lambda, &giso); if (x < gl) gl = x;
                 x = run(b_lambda, &d); if (x < t) t = x;
             }
             if (t / gl > worst) worst = t / gl;
-            printf("bench gtr_lambda_a%g_g%g %.2f ratio_to_ggx=%.2f nodes=%d ggx=%.2f\n", as[i], gs[j], t, t / gl, d.p.gtr.nq, gl);
+            printf("bench gtr_lambda_a%g_g%g %.2f ratio_to_ggx=%.2f nodes=%d ggx=%.2f\n", as[i], gs[j], t, t / gl, tab.nq, gl);
         }
     printf("bench gtr_lambda_worst ratio_to_ggx=%.2f\n", worst);
 }
@@ -840,9 +854,9 @@ static void bench_gtr_student(void)
         struct { const char *name; mf_ndf d; } hs[6];
         mf_ndf giso = mf_ggx(MF_R(0.3), MF_R(0.3));
         double gl, gd, gs, gv, mg, mt;
-        hs[0].name = "gtr_a0.02_g1.5"; hs[0].d = mf_gtr(MF_R(0.02), MF_R(1.5));
-        hs[1].name = "gtr_a0.3_g0.5"; hs[1].d = mf_gtr(MF_R(0.3), MF_R(0.5));
-        hs[2].name = "gtr_a0.3_g2.5"; hs[2].d = mf_gtr(MF_R(0.3), MF_R(2.5));
+        hs[0].name = "gtr_a0.02_g1.5"; hs[0].d = gtr_tab(MF_R(0.02), MF_R(1.5));
+        hs[1].name = "gtr_a0.3_g0.5"; hs[1].d = gtr_tab(MF_R(0.3), MF_R(0.5));
+        hs[2].name = "gtr_a0.3_g2.5"; hs[2].d = gtr_tab(MF_R(0.3), MF_R(2.5));
         hs[3].name = "gtr_a0.3_g3"; hs[3].d = mf_gtr(MF_R(0.3), MF_R(3.0));
         hs[4].name = "student_t_a0.3_g1.6"; hs[4].d = mf_student_t(MF_R(0.3), MF_R(0.3), MF_R(1.6));
         hs[5].name = "student_t_a0.3_g3"; hs[5].d = mf_student_t(MF_R(0.3), MF_R(0.3), MF_R(3.0));
@@ -860,6 +874,12 @@ static void bench_gtr_student(void)
                 run_pair2(fs[o], &giso, fs[o], d, &tg, &t);
                 printf("bench %s_%s %.2f ratio_to_ggx=%.2f ggx=%.2f\n", hs[k].name, ops[o], t, t / tg, tg);
             }
+        }
+        {   /* mf_gtr by value at a non-integer gamma: Lambda builds the rule at each call */
+            mf_ndf bv = mf_gtr(MF_R(0.3), MF_R(1.5));
+            double tg, t;
+            run_pair2(b_lambda, &giso, b_lambda, &bv, &tg, &t);
+            printf("bench gtr_a0.3_g1.5_by_value_lambda %.2f ratio_to_ggx=%.2f ggx=%.2f\n", t, t / tg, tg);
         }
         run_pair(b_make_ggx, b_make_gtr, &giso, &mg, &mt);
         printf("bench ggx_construct %.2f\nbench gtr_construct_noninteger_gamma %.2f ratio_to_ggx=%.2f\n", mg, mt, mt / mg);
@@ -1024,7 +1044,7 @@ int main(int argc, char **argv)
     }
     ks[0].name = "beckmann"; ks[0].d = mf_beckmann(MF_R(0.3), MF_R(0.2));
     ks[1].name = "ggx"; ks[1].d = mf_ggx(MF_R(0.3), MF_R(0.2));
-    ks[2].name = "gtr1.5"; ks[2].d = mf_gtr(MF_R(0.3), MF_R(1.5));
+    ks[2].name = "gtr1.5"; ks[2].d = gtr_tab(MF_R(0.3), MF_R(1.5));
     ks[3].name = "gtr3"; ks[3].d = mf_gtr(MF_R(0.3), MF_R(3.0));
     ks[4].name = "student_t3"; ks[4].d = mf_student_t(MF_R(0.3), MF_R(0.2), MF_R(3.0));
     printf("# microfacet.h %d.%d.%d bench: compiler %s, flags %s, mf_real %s, %d inputs, best of %d\n",

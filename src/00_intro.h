@@ -61,11 +61,21 @@
  *
  * ADDING A DISTRIBUTION KIND
  *
- *   1. Write src/06_kind_<name>.h (06_kind_ggx.h shows the layout): its
- *      parameter struct mf_ndf_<name> in the @decl part, a constructor that
- *      fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
+ *   1. Write src/06_kind_<name>.h (06_kind_ggx.h shows the layout of an
+ *      inline kind, 06_kind_student_t.h of a cold one): its parameter struct
+ *      mf_ndf_<name> in the @decl part (at most a pointer and six mf_real:
+ *      mf_ndf stays within 64 bytes in float; larger data goes in a built
+ *      object it points to, like mf_tabulated or mf_gtr_table), a constructor
+ *      that fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
  *      _sample_D and _sample_visible (contract in 05_ndf.h).
- *   2. Add the line X(NAME, name) to MF__NDF_KINDS in src/05_ndf.h.
+ *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
+ *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
+ *      front ends inline, whether its mean slope is 0, which numerical
+ *      sampler, LTC family, Trowbridge-Reitz forms, energy table, isotropy
+ *      at ax = ay, built object), and each trait names the functions the
+ *      module must then define (05_ndf.h lists them). Other modules never
+ *      test a kind by name; they ask its traits (tests/kind_names_check.sh,
+ *      part of `make test`, counts such tests).
  *   3. Add the kind to the test cases of tests/main.c (normalization, masking,
  *      sampling chi-square, BRDF battery and robustness sweep then cover it),
  *      run `make header` and `make test`.

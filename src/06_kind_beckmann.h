@@ -67,7 +67,8 @@ MF_FORCE_INLINE mf_vec3 mf_beckmann_sample_visible(mf_real ax, mf_real ay, mf_ve
     return mf_normalize(mf_vec3_make(-ax * x, -ay * y, MF_R(1.0)));
 }
 
-/* The kind's entries of the generic dispatch (05_ndf.h). */
+/* The kind's entries of the generic dispatch (05_ndf.h; INL 1: the front
+ * ends inline D, Lambda and the NDF sampling). */
 MF_FORCE_INLINE mf_real mf__beckmann_D(const mf_ndf *d, mf_vec3 wm) { return mf_beckmann_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__beckmann_lambda(const mf_ndf *d, mf_vec3 w) { return mf_beckmann_lambda(d->ax, d->ay, w); }
 /* u1, u2 in [0, 1] (mf_sample_D clamps them) */
@@ -82,6 +83,12 @@ MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_D(const mf_ndf *d, mf_real u1, mf_re
 MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
+}
+/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__beckmann_family(mf_real alpha, mf_real gamma)
+{
+    (void)gamma;
+    return mf_beckmann(alpha, alpha);
 }
 /* @cold */
 /* Beckmann visible slopes for unit roughness and view tan(theta) = tv (view

@@ -123,7 +123,8 @@ MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
     return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
 }
 
-/* The kind's entries of the generic dispatch (05_ndf.h). */
+/* The kind's entries of the generic dispatch (05_ndf.h; INL 2: the front
+ * ends inline them). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
 MF_FORCE_INLINE mf_real mf__ggx_lambda(const mf_ndf *d, mf_vec3 w) { return mf_ggx_lambda(d->ax, d->ay, w); }
 /* the NDF sample not normalized (mf_sample_D normalizes a transformed one
@@ -141,4 +142,16 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_D(const mf_ndf *d, mf_real u1, mf_real u2
 MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
+}
+/* the visible normal before its normalization (a transformed GGX normalizes
+ * once, after M^-T); w.z >= 0 */
+MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible_dir(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    return mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
+}
+/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__ggx_family(mf_real alpha, mf_real gamma)
+{
+    (void)gamma;
+    return mf_ggx(alpha, alpha);
 }

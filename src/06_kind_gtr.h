@@ -5,40 +5,64 @@
  * limit C.6), isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma. Lambda from
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
- * rule built at construction (mf__gtr_mix_init); NDF sampling by the
- * closed-form inverse CDF (mf__gtr_sample_D), visible normals by exact
- * rejection from GGX or from a mixture of GGX lobes (mf__gtr_sample_visible),
- * falling back on the exact numerical inversion of 07_numeric_vndf.h.
- * Everything but the constructor is cold. */
+ * rule (mf__gtr_mix_init): too large for mf_ndf, it lives in an mf_gtr_table
+ * (mf_gtr_table_build, mf_gtr_table_ndf), or is built at each call of Lambda
+ * when the distribution has none (mf_gtr at a non-integer gamma: exact, about
+ * a microsecond). NDF sampling by the closed-form inverse CDF
+ * (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
+ * mixture of GGX lobes (mf__gtr_sample_visible), falling back on the exact
+ * numerical inversion of 07_numeric_vndf.h. Everything but the constructors
+ * is cold. */
 /* @decl */
 /* most nodes of the Lambda mixture rule (the rule takes fewer at larger
  * alpha: mf__gtr_mix_init) */
 #define MF__GTR_NQ 24
-typedef struct mf_ndf_gtr {
-    mf_real gamma;      /* tail exponent in [0, 4] */
-    mf_real norm;       /* N of D = N / (sin^2 + a^2 cos^2)^gamma */
-    mf_real L;          /* log(alpha^2) */
-    mf_real E, EM;      /* expm1((1 - gamma) L), expm1(-(1 - gamma) L) */
-    mf_real RK, RMK;    /* kL / expm1(kL) and -kL / expm1(-kL), k = 1 - gamma */
-    int mix;            /* Lambda: 0 closed form (integer gamma), mixture of 1 GGX, 2 gamma-3, 3 gamma-4 */
-    int nq;             /* nodes of the mixture rule */
-    int vmode;          /* visible sampler: 0 GGX of alpha vs[0], 1 GGX mixture, 2 rejection from GGX */
+/* What a GTR computes at each call without it: the Lambda rule at a
+ * non-integer gamma, and the visible sampler's mixture envelope (gamma below
+ * 2, alpha below 1/4). Built by mf_gtr_table_build (no allocation: a plain
+ * struct, copied as it is to device memory). Fields are filled by the
+ * builder; read them, do not write them. */
+typedef struct mf_gtr_table {
+    mf_real alpha, gamma;       /* the distribution's, clamped as mf_gtr clamps them */
+    int nq;                     /* nodes of the mixture rule, a multiple of 4 (0: integer gamma) */
     mf_real qb[MF__GTR_NQ], qw[MF__GTR_NQ];   /* mixture nodes alpha_b^2 and weights */
-    mf_real vs[21];     /* the samplers' constants (mf__gtr_sampler_init) */
+    mf_real E, EM;              /* expm1(kL), expm1(-kL), k = 1 - gamma, L = log(alpha^2) */
+    mf_real RK, RMK;            /* kL / expm1(kL) and -kL / expm1(-kL) */
+    mf_real vs[19];             /* the mixture envelope of the visible sampler (mf__gtr_envelope;
+                                   mf_ndf.mode's sampler 1 only) */
+} mf_gtr_table;
+typedef struct mf_ndf_gtr {
+    const mf_gtr_table *tab;    /* the table of mf_gtr_table_ndf, 0 from mf_gtr */
+    mf_real gamma;              /* tail exponent in [0, 4] */
+    mf_real norm;               /* N of D = N / (sin^2 + a^2 cos^2)^gamma */
+    mf_real L;                  /* log(alpha^2) */
+    mf_real A;                  /* exp((1 - gamma) L) = alpha^(2 (1 - gamma)) */
+    mf_real v0, v1;             /* the visible sampler's constants (mf__gtr_sampler_init) */
 } mf_ndf_gtr;
 /* @api */
-MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a);
-MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
+/* mf_ndf.mode of a GTR: the Lambda mixture (0 closed form at integer gamma,
+ * mixture of 1 GGX, 2 gamma-3, 3 gamma-4) times 4, plus the visible sampler
+ * (0 GGX of alpha v0, 1 GGX mixture, 2 rejection from GGX) */
+#define MF__GTR_MIX(d) ((int)(d)->mode >> 2)
+#define MF__GTR_VMODE(d) ((int)(d)->mode & 3)
+MF_COLD int mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
+MF_COLD void mf__gtr_mix_init(mf_gtr_table *t, mf_real a, mf_real gamma);
+MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19]);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
  * alpha in [MF_ALPHA_MIN, 1], gamma in [0, 4] (clamped; see CLAMPS above).
  * gamma = 2 is GGX, gamma = 1 the Berry distribution (limit C.6), gamma = 0
  * the uniform 1/pi; alpha = 1 gives 1/pi for every gamma. N is written with
- * x/expm1(x) so the limits gamma -> 1 and alpha -> 1 are exact. */
+ * x/expm1(x) so the limits gamma -> 1 and alpha -> 1 are exact. At a
+ * non-integer gamma, Lambda builds its rule at each call (about a
+ * microsecond); below gamma 2 and alpha 1/4 the visible sampler derives its
+ * envelope at each sample: for speed, build an mf_gtr_table once and use
+ * mf_gtr_table_ndf (the same values). */
 MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
 {
     mf_ndf d;
     mf_ndf_gtr *p;
     mf_real a, L, k;
+    int mix;
     a = mf__clamp_alpha(alpha);
     if (a > MF_R(1.0)) a = MF_R(1.0);
     /* the bits: under -ffast-math the comparisons let NaN through, and the
@@ -53,23 +77,47 @@ MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
     /* N = (gamma-1)(a^2-1) / (pi (1 - a^(2(1-gamma))))  (C.5) = r(kL) / (pi r(L)) */
     p->norm = mf__x_over_expm1(k * L) / (MF_PI * mf__x_over_expm1(L));
     p->L = L;
-    p->E = MF_EXPM1(k * L);
-    p->EM = MF_EXPM1(-k * L);
-    p->RK = mf__x_over_expm1(k * L);
-    p->RMK = mf__x_over_expm1(-k * L);
-    mf__gtr_mix_init(p, a);
-    mf__gtr_sampler_init(p, a);
+    p->A = MF_EXP(k * L);
+    mix = gamma == (mf_real)(int)gamma ? 0 : gamma < MF_R(2.0) ? 1 : gamma < MF_R(3.0) ? 2 : 3;
+    d.mode = (unsigned char)(4 * mix + mf__gtr_sampler_init(p, a));
     return d;
 }
 
+/* The table of mf_gtr(alpha, gamma) into *t (nothing is allocated, nothing
+ * to release). MF_ERROR_INVALID_ARGUMENT for a NULL t. */
+MF_COLD mf_result mf_gtr_table_build(mf_gtr_table *t, mf_real alpha, mf_real gamma);
+/* The GTR of a built table: the values of mf_gtr(t->alpha, t->gamma), to the
+ * bit, with Lambda at a non-integer gamma as fast as at an integer one, and
+ * the mixture sampler's envelope read, not derived at each sample. The
+ * distribution refers to t: keep t alive, in place and unchanged while it is
+ * used (for CUDA, copy the struct to device memory and pass its device
+ * address). A NULL t gives a distribution whose every function returns 0. */
+MF_INLINE mf_ndf mf_gtr_table_ndf(const mf_gtr_table *t)
+{
+    mf_ndf d;
+    if (!t) return mf__ndf_init(MF_NDF_KIND_COUNT, MF_R(1.0), MF_R(1.0));
+    d = mf_gtr(t->alpha, t->gamma);
+    d.p.gtr.tab = t;
+    return d;
+}
+/* the member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
+{
+    return mf_gtr(alpha, gamma);
+}
+
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h). */
+ * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h; ISO 1). */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__gtr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2);
+MF_INLINE mf_real mf__gtr_vndf_p(const mf_ndf *d) { (void)d; return MF_R(4.0); }   /* tan ~ q^-1/2 at every gamma */
+/* d with its table built in t (trait PREP), or d itself where it has one or
+ * needs none (integer gamma, sampler other than the mixture) */
+MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_table *t);
 /* sqrt(x) for x in [1, 2e16] in the mixture loops of mf__gtr_lambda. Float:
  * the bit-level first guess of 1/sqrt(x) (relative error < 3.5%), three
  * Newton steps y (3 - x y^2) / 2 (each squares the error: a few float ulps),
@@ -174,34 +222,34 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
  * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.7-18.4x
  * GGX's Lambda from alpha 0.3 to 1e-4 (double 5-37x: its square roots stay
- * scalar where sqrt may set errno; 4-24x with -fno-math-errno); building the rule
- * makes mf_gtr at non-integer gamma cost about 1 us (Golub-Welsch; integer
- * gamma costs nothing). tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8) so
- * float never overflows. */
-MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
+ * scalar where sqrt may set errno; 4-24x with -fno-math-errno) with the rule
+ * of an mf_gtr_table; building the rule (Golub-Welsch), which Lambda does at
+ * each call without one, costs about 1 us (integer gamma needs no rule). The
+ * rule's 2 x 24 numbers do not fit in mf_ndf, and no cheaper exact form is
+ * known: the per-call work of any rule whose nodes depend on gamma is
+ * transcendental per node. tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8)
+ * so float never overflows. */
+/* the mixture sum of kind mix (1, 2, 3: components of gamma 2, 3, 4) at tan^2 t2 */
+MF_INLINE mf_real mf__gtr_lambda_mix(const mf_gtr_table *p, int mix, mf_real t2)
 {
-    const mf_ndf_gtr *p = &d->p.gtr;
-    mf_real t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16)), s[4];
+    mf_real s[4];
     int j, k;
-    if (!(t2 > MF_R(0.0))) return MF_R(0.0);
-    if (p->mix == 0)   /* integer gamma: C.8 and C.11 can round to -4e-23 in float */
-        return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
     /* nq is a multiple of 4 (zero-weight padding): four independent sums, one
      * loop per component so that each vectorizes */
     s[0] = s[1] = s[2] = s[3] = MF_R(0.0);
-    if (p->mix == 1) {          /* C.9 (times 2) */
+    if (mix == 1) {          /* C.9 (times 2) */
         for (j = 0; j < p->nq; j += 4)
             for (k = 0; k < 4; ++k) {
                 mf_real bt = p->qb[j + k] * t2;
                 s[k] += p->qw[j + k] * bt / (mf__gtr_sqrt(MF_R(1.0) + bt) + MF_R(1.0));
             }
-    } else if (p->mix == 2) {   /* C.10 */
+    } else if (mix == 2) {   /* C.10 */
         for (j = 0; j < p->nq; j += 4)
             for (k = 0; k < 4; ++k) {
                 mf_real b = p->qb[j + k], bt = b * t2;
                 s[k] += p->qw[j + k] * mf__gtr_lambda3s(b, bt, mf__gtr_sqrt(MF_R(1.0) + bt));
             }
-    } else {                    /* C.11 */
+    } else {                 /* C.11 */
         for (j = 0; j < p->nq; j += 4)
             for (k = 0; k < 4; ++k) {
                 mf_real b = p->qb[j + k], bt = b * t2;
@@ -209,6 +257,21 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
             }
     }
     return (s[0] + s[1]) + (s[2] + s[3]);
+}
+MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
+{
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real t2 = mf_min(mf__a2t2(MF_R(1.0), MF_R(1.0), w), MF_R(1e16));
+    int mix = MF__GTR_MIX(d);
+    if (!(t2 > MF_R(0.0))) return MF_R(0.0);
+    if (mix == 0)   /* integer gamma: C.8 and C.11 can round to -4e-23 in float */
+        return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
+    if (p->tab) return mf__gtr_lambda_mix(p->tab, mix, t2);
+    {
+        mf_gtr_table t;   /* no table (mf_gtr): the rule, built here */
+        mf__gtr_mix_init(&t, d->ax, p->gamma);
+        return mf__gtr_lambda_mix(&t, mix, t2);
+    }
 }
 
 /* Gauss-Jacobi rule for the weight (1-x)^ea (1+x)^eb on [-1, 1] by Golub and
@@ -254,22 +317,21 @@ MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *
     for (i = 0; i < n; ++i) w[i] *= w[i];
 }
 
-/* The mixture rule of mf__gtr_lambda for p->gamma and alpha a (see there), built
- * in double in every build. With
+/* The mixture rule of mf__gtr_lambda for gamma and alpha a (see there) into
+ * t->nq, qb, qw, built in double in every build. With
  * u = y - log a^2, the smooth factor is, in logs,
  *   (l-1) log(expm1(u)/u) + (m-1) log(expm1(y)/y)      (the exact endpoint factors)
  *   + log of b times the component's normalization N_k(b)^-1 (C.5):
  *     k = 3: (1 + b) / b;  k = 4: (b^2 + b + 1) / b^2  (k = 2: constant).
  * Nodes: ceil(c1 |log a^2| + c0), (c1, c0) = (0.85, 2.5), (1.15, 2.5), (1.3, 3)
  * for k = 2, 3, 4 (see mf__gtr_lambda), at most MF__GTR_NQ. */
-MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
+MF_COLD void mf__gtr_mix_init(mf_gtr_table *p, mf_real a, mf_real gamma)
 {
-    double g = (double)p->gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
+    double g = (double)gamma, L = 2.0 * log((double)a), el, em = g - 1.0, x[MF__GTR_NQ], w[MF__GTR_NQ], lf[MF__GTR_NQ], qb[MF__GTR_NQ];
     double top = -1e300, sum = 0.0, fn;
     int i, n, k;
-    if (g == floor(g)) { p->mix = 0; p->nq = 0; return; }
-    p->mix = g < 2.0 ? 1 : g < 3.0 ? 2 : 3;
-    k = p->mix + 1;                       /* the components' integer gamma */
+    if (g == floor(g)) { p->nq = 0; return; }
+    k = g < 2.0 ? 2 : g < 3.0 ? 3 : 4;    /* the components' integer gamma */
     fn = k == 2 ? ceil(2.5 - 0.85 * L) : k == 3 ? ceil(2.5 - 1.15 * L) :
          ceil(3.0 - 1.3 * L);
     n = fn < MF__GTR_NQ ? (int)fn : MF__GTR_NQ;
@@ -295,27 +357,40 @@ MF_COLD void mf__gtr_mix_init(mf_ndf_gtr *p, mf_real a)
     }
 }
 
+/* expm1(kL), expm1(-kL), kL / expm1(kL), -kL / expm1(-kL) (k = 1 - gamma):
+ * the careful inversion's constants (mf_gtr_table holds them) */
+MF_INLINE void mf__gtr_expm1s(mf_real gamma, mf_real L, mf_real *E, mf_real *EM, mf_real *RK, mf_real *RMK)
+{
+    mf_real k = MF_R(1.0) - gamma;
+    *E = MF_EXPM1(k * L);
+    *EM = MF_EXPM1(-k * L);
+    *RK = mf__x_over_expm1(k * L);
+    *RMK = mf__x_over_expm1(-k * L);
+}
+
 /* tan^2(theta) at D-cos mass t from the pole (q = 1 - t beyond): w = sin^2 +
  * a^2 cos^2 has density ~ w^-gamma on [a^2, 1]; log w = lw. MF_BIG at q = 0. */
 MF_COLD mf_real mf__gtr_tan2(const mf_ndf *d, mf_real t, mf_real q)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
-    mf_real L = p->L, uq, ut, lw, llw, c2, s2;
+    mf_real L = p->L, uq, ut, lw, llw, c2, s2, E, EM, RK, RMK;
     if (!(q > MF_R(0.0))) return MF_BIG;
     if (!(t > MF_R(0.0))) return MF_R(0.0);
+    if (p->tab) { E = p->tab->E; EM = p->tab->EM; RK = p->tab->RK; RMK = p->tab->RMK; }
+    else mf__gtr_expm1s(p->gamma, L, &E, &EM, &RK, &RMK);
     /* uq = lw / L and ut = (L - lw) / L add up to 1. Each is computed from
      * its own end (q or t), starting from the smaller mass, which carries the
      * precision (the other is 1 minus it); the other end takes over when its
      * u is the smaller one and its mass keeps log1p away from -1 (in float,
      * t = 1 - 6e-9 rounds to 1 and t EM to -1 at gamma 4, alpha 0.0015). */
     if (q <= t) {
-        uq = q * mf__log1p_over_x(q * p->E) / p->RK;
+        uq = q * mf__log1p_over_x(q * E) / RK;
         ut = MF_R(1.0) - uq;
-        if (uq > MF_R(0.5) && t * p->EM > MF_R(-0.5)) { ut = t * mf__log1p_over_x(t * p->EM) / p->RMK; uq = MF_R(1.0) - ut; }
+        if (uq > MF_R(0.5) && t * EM > MF_R(-0.5)) { ut = t * mf__log1p_over_x(t * EM) / RMK; uq = MF_R(1.0) - ut; }
     } else {
-        ut = t * mf__log1p_over_x(t * p->EM) / p->RMK;
+        ut = t * mf__log1p_over_x(t * EM) / RMK;
         uq = MF_R(1.0) - ut;
-        if (ut > MF_R(0.5) && q * p->E > MF_R(-0.5)) { uq = q * mf__log1p_over_x(q * p->E) / p->RK; ut = MF_R(1.0) - uq; }
+        if (ut > MF_R(0.5) && q * E > MF_R(-0.5)) { uq = q * mf__log1p_over_x(q * E) / RK; ut = MF_R(1.0) - uq; }
     }
     lw = L * uq; llw = L * ut;
     c2 = uq / mf__x_over_expm1(lw);            /* cos^2 r(L)^-1 */
@@ -336,6 +411,69 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
     return lwL * mf__x_over_expm1(k * L) / mf__x_over_expm1(k * L * lwL);
 }
 
+/* The mixture envelope of mf__gtr_sample_visible (mode 1: gamma in (0, 2),
+ * alpha <= 1/4). Term j has the density C_j z^(q_j - 1) on its piece [lo, hi]
+ * of the ends 0, a^2/4, 4a^2, 1/4, 4, inf (pieces 0, 1, 1, 2, 2, 3, 4 for j =
+ * 0..6; q_j = 2, 3/2, 2, 1, 3/2, 1/2, 0 minus gamma; log C_j = -L, -L/2 -
+ * log 2, 0, -log 2, 0 by piece, L = log a^2): vs[j] = its mass C_j z_e^q k_j,
+ * vs[7 + j] = kk_j = -k_j (q > 0, z_e = hi) or k_j (q <= 0, z_e = lo), k_j =
+ * s_j / |q_j|, vs[13 + j] = s_j = -expm1(-|q_j| log(hi/lo)) (1 on the two
+ * unbounded pieces). Each C_j z_e^q_j is a product of A = a^(2 (1 - gamma)),
+ * a, 4^gamma and powers of 2, and each 1 - s_j one of 16^gamma, A and a: no
+ * exponential but s_j's expm1 where 1 - s_j > 1/2 (there 1 minus the product
+ * would lose s_j's relative precision). */
+/* s_j and k_j of a bounded piece from P = 1 - s_j = exp(-|q| ll), iaq = 1/|q|
+ * (0 at q = 0), ll = log(hi/lo); where P > 1/2, s_j from its own expm1 */
+MF_INLINE void mf__gtr_piece(mf_real P, mf_real q, mf_real iaq, mf_real ll, mf_real *sj, mf_real *kj)
+{
+    if (!(P > MF_R(0.5))) { *sj = MF_R(1.0) - P; *kj = *sj * iaq; return; }
+    if (q == MF_R(0.0)) { *sj = MF_R(0.0); *kj = ll; return; }   /* the limit q -> 0 */
+    *sj = -MF_EXPM1(-MF_FABS(q) * ll);
+    *kj = *sj * iaq;
+}
+MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19])
+{
+    const mf_ndf_gtr *p = &d->p.gtr;
+    mf_real g = p->gamma, a = d->ax, A = p->A, G4 = p->v0, aA = a * A, r = MF_R(1.0) / (G4 * aA);
+    mf_real iG4 = r * aA, iA = r * G4 * a, iaA = r * G4, G16 = G4 * G4, iG16 = iG4 * iG4;
+    mf_real ln4 = MF_R(1.3862943611198906), ll16 = MF_R(2.0) * ln4, llm = -ln4 - (p->L + ln4);   /* log(hi/lo) of pieces 1, 3 and 2 */
+    mf_real q0 = MF_R(2.0) - g, q1 = MF_R(1.5) - g, q3 = MF_R(1.0) - g, q5 = MF_R(0.5) - g;   /* q_j = c_j - gamma */
+    mf_real i0 = MF_R(1.0) / q0, i1 = q1 != MF_R(0.0) ? MF_R(1.0) / MF_FABS(q1) : MF_R(0.0);
+    mf_real i3 = q3 != MF_R(0.0) ? MF_R(1.0) / MF_FABS(q3) : MF_R(0.0), i5 = q5 != MF_R(0.0) ? MF_R(1.0) / MF_FABS(q5) : MF_R(0.0);
+    mf_real k;
+    /* unbounded pieces: s = 1, k = 1 / |q|; vs[j] = C_j z_e^q_j k_j */
+    vs[0] = A * G4 * MF_R(0.0625) * i0; vs[7] = -i0;
+    k = MF_R(1.0) / g; vs[6] = iG4 * k; vs[13] = k;
+    /* bounded pieces: 1 - s_j = 16^-|q| on pieces 1 and 3, (16 a^2)^|q| on piece 2 */
+    mf__gtr_piece(G16 * MF_R(0.00390625), q0, i0, ll16, &vs[15], &k);
+    vs[2] = MF_R(8.0) * aA * iG4 * k; vs[9] = -k;
+    if (q1 > MF_R(0.0)) {
+        mf__gtr_piece(G16 * MF_R(0.015625), q1, i1, ll16, &vs[14], &k);
+        vs[1] = MF_R(4.0) * A * iG4 * k; vs[8] = -k;
+        mf__gtr_piece(MF_R(64.0) * aA * iG16, q1, i1, llm, &vs[17], &k);
+        vs[4] = G4 * MF_R(0.125) * k; vs[11] = -k;
+    } else {
+        mf__gtr_piece(MF_R(64.0) * iG16, q1, i1, ll16, &vs[14], &k);
+        vs[1] = A * G4 * MF_R(0.0625) * k; vs[8] = k;
+        mf__gtr_piece(G16 * iaA * MF_R(0.015625), q1, i1, llm, &vs[17], &k);
+        vs[4] = MF_R(8.0) * aA * iG4 * k; vs[11] = k;
+    }
+    if (q3 > MF_R(0.0)) {
+        mf__gtr_piece(MF_R(16.0) * A * iG16, q3, i3, llm, &vs[16], &k);
+        vs[3] = G4 * MF_R(0.25) * k; vs[10] = -k;
+    } else {
+        mf__gtr_piece(G16 * iA * MF_R(0.0625), q3, i3, llm, &vs[16], &k);
+        vs[3] = MF_R(4.0) * A * iG4 * k; vs[10] = k;
+    }
+    if (q5 > MF_R(0.0)) {
+        mf__gtr_piece(G16 * MF_R(0.25), q5, i5, ll16, &vs[18], &k);
+        vs[5] = iG4 * k; vs[12] = -k;
+    } else {
+        mf__gtr_piece(MF_R(4.0) * iG16, q5, i5, ll16, &vs[18], &k);
+        vs[5] = G4 * MF_R(0.25) * k; vs[12] = k;
+    }
+}
+
 /* Visible normals (density D_w), exact, by one of (mf__gtr_sampler_init
  * chooses):
  * - gamma = 2, gamma = 0, alpha = 1: GGX of alpha, 1, 1 (the same D);
@@ -351,7 +489,7 @@ MF_COLD mf_real mf__gtr_tail(const mf_ndf *d, mf_real tan2)
  *   within 4/5 on pieces split at a^2/4, 4a^2 and 1/4, 4), times 1 + Lambda_b
  *   = (1 + sqrt(1 + b t^2))/2 <= its value at b = 5a^2/4 on [0, a^2/4],
  *   1 + Lambda_{a^2} + (t/2) sqrt z up to 1/4 (b <= a^2 + z), 1 + Lambda_1
- *   beyond (t = tan theta_w): seven power laws (mf__gtr_sampler_init), each
+ *   beyond (t = tan theta_w): seven power laws (mf__gtr_envelope), each
  *   inverted in closed form, log z = log z_e + kk u log1p(-u s) / (-u s);
  * - otherwise (gamma in (2, 4], or below 2 with K <= 1.5): rejection from
  *   GGX's VNDF of alpha_p (mf__gtr_sampler_init), accepting with D / (K D_GGX)
@@ -368,28 +506,30 @@ MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real
 MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     const mf_ndf_gtr *p = &d->p.gtr;
-    const mf_real *vs = p->vs;
     mf_real a2 = d->ax * d->ax, g = p->gamma;
     unsigned int st;
     mf_real v1 = u1, v2 = u2;   /* the current proposal's uniforms */
-    int it = 0, fresh = 1;
+    int it = 0, fresh = 1, vmode = MF__GTR_VMODE(d);
     mf_vec3 m = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    if (p->vmode == 0) return mf_ggx_sample_visible(vs[0], vs[0], w, u1, u2);
+    if (vmode == 0) return mf_ggx_sample_visible(p->v0, p->v0, w, u1, u2);
     if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     st = mf__stream_seed(u1, u2);
-    if (p->vmode == 2) {
-        mf_real ap = vs[0], ap2 = ap * ap;
+    if (vmode == 2) {
+        mf_real ap = p->v0, ap2 = ap * ap;
         m = mf_ggx_sample_visible(ap, ap, w, u1, u2);
         for (it = 0; it < 64; ++it) {
             /* D / (K D_GGX) = cK ((1+x)/(a^2+x))^(gamma-2) ((ap^2+x)/(a^2+x))^2, x = s2/c2 */
             mf_real c2 = m.z * m.z, s2 = m.x * m.x + m.y * m.y, den = a2 * c2 + s2, r = (ap2 * c2 + s2) / den;
-            r = vs[1] * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
+            r = p->v1 * MF_POW((c2 + s2) / den, g - MF_R(2.0)) * r * r;
             if (mf__stream_next(&st) < r && m.z > MF_R(0.0) && mf_dot(w, m) > MF_R(0.0)) break;
             mf__stream_next2(&st, &v1, &v2);
             m = mf_ggx_sample_visible(ap, ap, w, v1, v2);
         }
     } else {
-        mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax;
+        mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax, env[19];
+        const mf_real *vs = env;
+        if (p->tab) vs = p->tab->vs;   /* built once, by the same function */
+        else mf__gtr_envelope(d, env);
         t4 = s2 < w.z * w.z / (MF_EPS * MF_EPS) ? s2 / (w.z * w.z) : MF_R(1.0) / (MF_EPS * MF_EPS);   /* t^2 */
         th = MF_R(0.5) * MF_SQRT(t4);                                                  /* t/2, off the c0 path */
         /* 1 + Lambda_b at b = a^2, 5a^2/4 and 1 */
@@ -452,9 +592,9 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     const mf_ndf_gtr *p = &d->p.gtr;
     mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), q = MF_R(1.0) - t, k = MF_R(1.0) - p->gamma;
     mf_real a2 = d->ax * d->ax, w, n, e, tan2;
-    if (p->vmode == 0) return mf__gtr_ggx(p->vs[0], 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), t, u2);
-    /* A = vs[19] = exp(kL), not E + 1: float's E rounds near -1 at small alpha */
-    w = k != MF_R(0.0) ? MF_POW(p->vs[19] * q + t, p->vs[20]) : MF_EXP(p->L * q);
+    if (MF__GTR_VMODE(d) == 0) return mf__gtr_ggx(p->v0, 0, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0)), t, u2);
+    /* A = exp(kL), not E + 1: float's E rounds near -1 at small alpha */
+    w = k != MF_R(0.0) ? MF_POW(p->A * q + t, MF_R(1.0) / k) : MF_EXP(p->L * q);
     n = w - a2; e = MF_R(1.0) - w;
     /* (2/|k| + 2 + |L|) (w/n + w/e) <= 128, without dividing by k */
     if (n > MF_R(0.0) && e > MF_R(0.0) &&
@@ -465,24 +605,18 @@ MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__wm_from_slope_u(MF_R(1.0), MF_R(1.0), tan2, u2);
 }
 
-/* The visible sampler's mode and constants (see mf__gtr_sample_visible);
- * vs[19] = a^(2k) = exp(kL) and vs[20] = 1/k (k = 1 - gamma, 0 at gamma 1)
- * for mf__gtr_sample_D. Mixture: term j has the density C_j z^(q_j - 1) on
- * its piece [lo, hi]; vs[j] = its mass C_j z_e^q k_j, vs[7 + j] = kk_j =
- * -k_j (q > 0, z_e = hi) or k_j (q <= 0, z_e = lo), k_j = s_j / |q_j|,
- * vs[13 + j] = s_j = -expm1(-|q_j| log(hi/lo)) (1 on the two unbounded
- * pieces). Rejection: vs[0] = alpha_p, vs[1] = N pi / (alpha_p^2 K), K = max
- * of the ratio at x = 0, infinity and its one stationary point. */
-MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
+/* The visible sampler's mode (returned) and constants (see
+ * mf__gtr_sample_visible). Rejection (2): v0 = alpha_p, v1 = N pi /
+ * (alpha_p^2 K), K = max of the ratio at x = 0, infinity and its one
+ * stationary point. Mixture (1): v0 = 4^gamma, from which mf__gtr_envelope
+ * derives the envelope. GGX (0): v0 = its alpha. */
+MF_COLD int mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
 {
     mf_real g = p->gamma, L = p->L, a2 = a * a, npi = p->norm * MF_PI;
     mf_real ap2, c1, c0, l0, li, lk, x;
-    int j;
-    p->vmode = 0;
-    p->vs[0] = g == MF_R(2.0) ? a : MF_R(1.0);
-    if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return;
-    p->vs[19] = MF_EXP((MF_R(1.0) - g) * L);
-    p->vs[20] = g != MF_R(1.0) ? MF_R(1.0) / (MF_R(1.0) - g) : MF_R(0.0);
+    p->v0 = g == MF_R(2.0) ? a : MF_R(1.0);
+    p->v1 = MF_R(0.0);
+    if (g == MF_R(0.0) || g == MF_R(2.0) || !(a < MF_R(1.0))) return 0;
     /* GGX proposal: alpha_p^2 = a^gamma below gamma 2 (it minimizes K there),
      * a^2 / (1 + (gamma - 2)(1 - a^2)) above; K = the largest of the ratio at
      * x = 0 (npi ap^2 a^(-2g)), infinity (npi / ap^2) and its one stationary
@@ -496,29 +630,34 @@ MF_COLD void mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a)
         lk = mf_max(lk, li + (g - MF_R(2.0)) * MF_LOG1P(x) + MF_R(2.0) * MF_LOG1P(x / ap2) - g * MF_LOG(a2 + x) + MF_R(2.0) * MF_LOG(ap2));
     /* K <= 1.5 below gamma 2: alpha >~ 0.15; the mixture's pieces need 4a^2 <= 1/4 */
     if (g > MF_R(2.0) || lk < MF_LOG(MF_R(1.5)) || a > MF_R(0.25)) {
-        p->vmode = 2;
-        p->vs[0] = MF_SQRT(ap2);
-        p->vs[1] = npi / (ap2 * MF_EXP(lk));
-        return;
+        p->v0 = MF_SQRT(ap2);
+        p->v1 = npi / (ap2 * MF_EXP(lk));
+        return 2;
     }
-    p->vmode = 1;
-    for (j = 0; j < 7; ++j) {
-        /* piece pc = (j+1)/2 of the ends 0, a^2/4, 4a^2, 1/4, 4, inf (in logs); q_j; log C_j */
-        mf_real ln4 = MF_R(1.3862943611198906), ends[6], q, lo, hi, ll, sj, kj, lc, le;
-        int pc = j == 6 ? 4 : (j + 1) >> 1;
-        ends[0] = -MF_BIG; ends[1] = L - ln4; ends[2] = L + ln4; ends[3] = -ln4; ends[4] = ln4; ends[5] = MF_BIG;
-        q = (j == 0 || j == 2 ? MF_R(2.0) : j == 1 || j == 4 ? MF_R(1.5) : j == 3 ? MF_R(1.0) : j == 5 ? MF_R(0.5) : MF_R(0.0)) - g;
-        lo = ends[pc]; hi = ends[pc + 1];
-        lc = pc == 0 ? -L : pc == 1 ? -MF_R(0.5) * L - MF_LOG(MF_R(2.0)) : pc == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
-        if (pc == 0 || pc == 4) { sj = MF_R(1.0); kj = MF_R(1.0) / MF_FABS(q); }
-        else {
-            ll = hi - lo;
-            sj = -MF_EXPM1(-MF_FABS(q) * ll);
-            kj = ll / mf__x_over_expm1(-MF_FABS(q) * ll);
-        }
-        le = q > MF_R(0.0) ? hi : lo;
-        p->vs[j] = MF_EXP(lc + q * le) * kj;
-        p->vs[7 + j] = q > MF_R(0.0) ? -kj : kj;
-        if (j >= 1 && j <= 5) p->vs[13 + j] = sj;
-    }
+    p->v0 = MF_EXP(g * MF_R(1.3862943611198906));
+    return 1;
+}
+
+MF_COLD mf_result mf_gtr_table_build(mf_gtr_table *t, mf_real alpha, mf_real gamma)
+{
+    mf_ndf d;
+    int i;
+    if (!t) return MF_ERROR_INVALID_ARGUMENT;
+    d = mf_gtr(alpha, gamma);
+    t->alpha = d.ax;
+    t->gamma = d.p.gtr.gamma;
+    mf__gtr_mix_init(t, t->alpha, t->gamma);
+    mf__gtr_expm1s(t->gamma, d.p.gtr.L, &t->E, &t->EM, &t->RK, &t->RMK);
+    if (MF__GTR_VMODE(&d) == 1) mf__gtr_envelope(&d, t->vs);
+    else for (i = 0; i < 19; ++i) t->vs[i] = MF_R(0.0);
+    return MF_SUCCESS;
+}
+
+MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_table *t)
+{
+    if ((MF__GTR_MIX(d) == 0 && MF__GTR_VMODE(d) != 1) || d->p.gtr.tab) return d;
+    mf_gtr_table_build(t, d->ax, d->p.gtr.gamma);
+    *copy = *d;
+    copy->p.gtr.tab = t;
+    return copy;
 }

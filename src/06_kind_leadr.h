@@ -9,45 +9,57 @@
 /* @decl */
 typedef struct mf_ndf_leadr {
     mf_real mx, my;            /* mean slope */
-    mf_real vx, vy, cxy;       /* covariance */
-    mf_real ixx, iyy, ixy;     /* inverse covariance */
+    mf_real vx, vy, cxy;       /* covariance (its inverse and Cholesky factor are
+                                  derived where needed: mf__leadr_inverse, mf__leadr_chol) */
     mf_real norm;              /* 1 / (2 pi sqrt(det)) (Eq. 8) */
-    mf_real l00, l10, l11;     /* Cholesky factor, L L^T = covariance */
 } mf_ndf_leadr;
 /* @api */
 /* The distribution of slopes with mean (mx, my) (finite) and covariance
  * [vx c; c vy] (positive definite; mf_leadr_ndf ensures both). */
 MF_INLINE mf_ndf mf__leadr_ndf_make(mf_real mx, mf_real my, mf_real vx, mf_real vy, mf_real c)
 {
-    mf_real det, l00, l10;
     mf_ndf d = mf__ndf_init(MF_NDF_LEADR, MF_SQRT(MF_R(2.0) * vx), MF_SQRT(MF_R(2.0) * vy));
     mf_ndf_leadr *p = &d.p.leadr;
     p->mx = mx; p->my = my;
     p->vx = vx; p->vy = vy; p->cxy = c;
-    det = vx * vy - c * c;
-    p->ixx = vy / det; p->iyy = vx / det; p->ixy = -c / det;
-    p->norm = MF_R(1.0) / (MF_R(2.0) * MF_PI * MF_SQRT(det));
-    l00 = MF_SQRT(vx); l10 = c / l00;
-    p->l00 = l00; p->l10 = l10;
-    p->l11 = MF_SQRT(mf_max(vy - l10 * l10, MF_R(1e-30)));
+    p->norm = MF_R(1.0) / (MF_R(2.0) * MF_PI * MF_SQRT(vx * vy - c * c));
     return d;
 }
+/* the inverse covariance (ixx, iyy, ixy) and the Cholesky factor L (L L^T =
+ * covariance, l01 = 0) */
+MF_INLINE void mf__leadr_inverse(const mf_ndf_leadr *p, mf_real *ixx, mf_real *iyy, mf_real *ixy)
+{
+    mf_real det = p->vx * p->vy - p->cxy * p->cxy;
+    *ixx = p->vy / det; *iyy = p->vx / det; *ixy = -p->cxy / det;
+}
+MF_INLINE void mf__leadr_chol(const mf_ndf_leadr *p, mf_real *l00, mf_real *l10, mf_real *l11)
+{
+    *l00 = MF_SQRT(p->vx); *l10 = p->cxy / *l00;
+    *l11 = MF_SQRT(mf_max(p->vy - *l10 * *l10, MF_R(1e-30)));
+}
 
-/* The kind's entries of the generic dispatch (05_ndf.h). */
+/* The kind's entries of the generic dispatch (05_ndf.h; CEN 0: the mean slope). */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__leadr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
+MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
 /* @cold */
+MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+{
+    *mx = d->p.leadr.mx; *my = d->p.leadr.my;
+}
+
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
 {
     const mf_ndf_leadr *p = &d->p.leadr;
-    mf_real sx, sy, q, z2;
+    mf_real sx, sy, q, z2, ixx, iyy, ixy;
     if (!(wm.z > MF_R(0.0))) return MF_R(0.0);
     sx = -wm.x / wm.z - p->mx;
     sy = -wm.y / wm.z - p->my;
-    q = p->ixx * sx * sx + MF_R(2.0) * p->ixy * sx * sy + p->iyy * sy * sy;
+    mf__leadr_inverse(p, &ixx, &iyy, &ixy);
+    q = ixx * sx * sx + MF_R(2.0) * ixy * sx * sy + iyy * sy * sy;
     if (!(q >= MF_R(0.0) && q < MF_R(160.0))) return MF_R(0.0);   /* q < 0: float overflow */
     z2 = wm.z * wm.z;
     /* capped: a mean slope far from the axis keeps q small at grazing wm,
@@ -59,11 +71,13 @@ MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)
 MF_COLD mf_vec3 mf__leadr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     const mf_ndf_leadr *p = &d->p.leadr;
-    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    mf_real t = mf_clamp(u1, MF_R(0.0), MF_R(1.0)), l00, l10, l11;
     mf_real n1 = MF_R(1.4142135623730951) * mf_erfinv(MF_R(2.0) * t - MF_R(1.0));
     mf_real n2 = MF_R(1.4142135623730951) * mf_erfinv(MF_R(2.0) * u2 - MF_R(1.0));
-    mf_real sx = p->mx + p->l00 * n1;
-    mf_real sy = p->my + p->l10 * n1 + p->l11 * n2;
+    mf_real sx, sy;
+    mf__leadr_chol(p, &l00, &l10, &l11);
+    sx = p->mx + l00 * n1;
+    sy = p->my + l10 * n1 + l11 * n2;
     return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
 }
 
@@ -92,9 +106,10 @@ MF_COLD mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w)
  * across n stays standard normal. */
 MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
-    mf_real l00 = d->p.leadr.l00, l10 = d->p.leadr.l10, l11 = d->p.leadr.l11;
-    mf_real nx = l00 * w.x + l10 * w.y, ny = l11 * w.y, k = MF_SQRT(nx * nx + ny * ny);
-    mf_real cnum = w.z - d->p.leadr.mx * w.x - d->p.leadr.my * w.y, x, y, ex = MF_R(1.0), ey = MF_R(0.0), z1, z2, sx, sy;
+    mf_real l00, l10, l11, nx, ny, k, cnum, x, y, ex = MF_R(1.0), ey = MF_R(0.0), z1, z2, sx, sy;
+    mf__leadr_chol(&d->p.leadr, &l00, &l10, &l11);
+    nx = l00 * w.x + l10 * w.y; ny = l11 * w.y; k = MF_SQRT(nx * nx + ny * ny);
+    cnum = w.z - d->p.leadr.mx * w.x - d->p.leadr.my * w.y;
     if (w.z < MF_R(0.0) || !(cnum > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     if (k > MF_R(1e-30) * cnum) { ex = nx / k; ey = ny / k; }
     /* unit-Beckmann units (exp(-x^2)): z = sqrt(2) x, bound c = cnum / k */

@@ -18,9 +18,9 @@ typedef struct mf_ndf_student_t {
     mf_real gamma;      /* in [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] */
     mf_real K;          /* marginal slope density constant: P2(x) = K (1 + x^2/(g-1))^(1/2-g) */
     mf_real lbeta;      /* log B(gamma - 1, 1/2) */
-    mf_real vndf_p;     /* tail exponent of the numerical VNDF sampler's substitution */
-    mf_real vk;         /* gamma > 2: 1/K of the visible sampler's rejection from GGX */
-    mf_real vs[12];     /* gamma < 2: the visible sampler's mixture envelope (mf__student_t_sampler_init) */
+    mf_real vs[5];      /* the visible sampler's constants: gamma > 2, vs[0] = 1/K of its
+                           rejection from GGX; gamma < 2, the masses of its mixture
+                           envelope (mf__student_t_sampler_init) */
 } mf_ndf_student_t;
 /* @api */
 MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p);
@@ -29,11 +29,9 @@ MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p);
 MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
 {
     mf_ndf d;
-    mf_real g1, beta;
     if (!(gamma > MF_STUDENT_T_GAMMA_MIN)) gamma = MF_STUDENT_T_GAMMA_MIN;
     if (gamma > MF_STUDENT_T_GAMMA_MAX) gamma = MF_STUDENT_T_GAMMA_MAX;
     d = mf__ndf_init(MF_NDF_STUDENT_T, alpha_x, alpha_y);
-    g1 = gamma - MF_R(1.0);
     d.p.student_t.gamma = gamma;
     {
         /* in double in every build: the log-gamma values reach 5900 at gamma 1000,
@@ -43,13 +41,13 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
         d.p.student_t.K = (mf_real)(sqrt(gd - 1.0) * exp(lg - lgamma(gd)) / 1.7724538509055160273);
         d.p.student_t.lbeta = (mf_real)(lgamma(gd - 1.0) + 0.57236494292470008708 - lg);
     }
-    /* the sampler's tail substitution must cancel tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2) */
-    beta = MF_R(0.5) / g1;
-    d.p.student_t.vndf_p = MF_R(2.0) / (MF_R(1.0) - beta);
-    /* K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v = 1 */
-    d.p.student_t.vk = MF_R(0.25) * MF_EXP(-gamma * MF_LOG(g1 / gamma));
     mf__student_t_sampler_init(&d.p.student_t);
     return d;
+}
+/* the member of the LTC family (05_ndf.h, trait LTC) */
+MF_INLINE mf_ndf mf__student_t_family(mf_real alpha, mf_real gamma)
+{
+    return mf_student_t(alpha, alpha, gamma);
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
  * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h). */
@@ -59,6 +57,27 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__student_t_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__student_t_tail(const mf_ndf *d, mf_real tan2);
+/* Exponent p of the numerical sampler's substitution (07_numeric_vndf.h): it
+ * must cancel the tail tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2), p = 2 / (1 - beta). */
+MF_INLINE mf_real mf__student_t_vndf_p(const mf_ndf *d)
+{
+    mf_real beta = MF_R(0.5) / (d->p.student_t.gamma - MF_R(1.0));
+    return MF_R(2.0) / (MF_R(1.0) - beta);
+}
+/* Term j of the visible sampler's mixture envelope (gamma < 2, see
+ * mf__student_t_sampler_init): its k_j, with *kk = -k_j (q_j > 0) or k_j, and
+ * *s = s_j (1 on the unbounded pieces); returns q_j. */
+MF_INLINE mf_real mf__student_t_term(mf_real g, int j, mf_real *kj, mf_real *kk, mf_real *s)
+{
+    mf_real ln4 = MF_R(1.3862943611198906), q = g - (j == 0 ? MF_R(1.0) : j < 3 ? MF_R(1.5) : MF_R(2.0)), aq = MF_FABS(q);
+    *s = MF_R(1.0);
+    if (j == 2 || j == 3) {                 /* [1/4, 4]: log(hi/lo) = log 16 */
+        *s = -MF_EXPM1(-aq * MF_R(2.0) * ln4);
+        *kj = MF_R(2.0) * ln4 / mf__x_over_expm1(-aq * MF_R(2.0) * ln4);
+    } else *kj = MF_R(1.0) / aq;
+    *kk = q > MF_R(0.0) ? -*kj : *kj;
+    return q;
+}
 /* @cold */
 /* Student-t D in logs, so cos^2 may underflow: log D = -g log1p(s2/(g-1)) - 4 log cos,
  * s2 the squared scaled slope. D ~ cos^(2g-4) grows at the horizon when g < 2;
@@ -176,7 +195,7 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
             if (!(m.z > MF_R(0.0)) || !(mf_dot(w, m) > MF_R(0.0))) continue;
             /* (1+v)^2 (1+v/g1)^-g = (g1 (c2+q)/(gc+q))^2 (gc/(gc+q))^(g-2), v = q/c2 */
             r = g1 * (c2 + q) / (gc + q);
-            r = d->p.student_t.vk * r * r * MF_POW(gc / (gc + q), g - MF_R(2.0));
+            r = d->p.student_t.vs[0] * r * r * MF_POW(gc / (gc + q), g - MF_R(2.0));
             if (mf__stream_next(&st) < r) break;
         }
     } else {
@@ -191,12 +210,13 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
         tot = W[0] + W[1] + W[2] + W[3] + W[4];
         for (it = 0; it < 64; ++it) {
             /* the term from one uniform, the place in it from the next (in [0, 1)) */
-            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n;
+            mf_real x = mf__stream_next(&st) * tot, u = mf__stream_next(&st), lz, iz, rho, b1, n, kj, kk, sj;
             int k;
             for (k = 0; k < 4 && x >= W[k]; ++k) x -= W[k];
+            mf__student_t_term(g, k, &kj, &kk, &sj);
             /* log z = log z_e + kk u log1p(-u s)/(-u s); z_e = 1/4 (terms 0, 1, 3), 4 (2, 4) */
             lz = (k == 2 || k == 4 ? MF_R(1.3862944) : MF_R(-1.3862944)) +
-                 vs[5 + k] * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * vs[8 + k] : -u);
+                 kk * u * mf__log1p_over_x_fast(k == 2 || k == 3 ? -u * sj : -u);
             lz = mf_max(lz, lzmin);
             iz = MF_EXP(-lz);                       /* 1/z */
             rho = MF_SQRT(iz);
@@ -219,28 +239,25 @@ MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
     return mf__iso_sample_visible_view(d, ax, ay, w, u1, u2);
 }
 
-/* The mixture envelope of mf__student_t_sample_visible (gamma < 2): term j
- * has the density C_j z^(q_j - 1) on its piece [lo, hi] ((0, 1/4] twice,
- * [1/4, 4] twice, [4, inf); q = g-1, g-3/2, g-3/2, g-2, g-2; C = 1, 1, 1/2,
- * 1/2, 1); vs[j] = its mass C_j z_e^q k_j, vs[5 + j] = kk_j = -k_j (q > 0,
- * z_e = hi) or k_j (q < 0, z_e = lo), k_j = s_j / |q_j|, vs[10], vs[11] =
- * s_j = -expm1(-|q_j| log 16) of terms 2 and 3 (1 on the others). */
+/* The visible sampler's constants (see mf__student_t_sample_visible). gamma
+ * > 2: vs[0] = 1/K, K = sup (1 + v)^2 (1 + v/(g-1))^-g = 4 ((g-1)/g)^g, at v
+ * = 1. gamma < 2, the mixture envelope: term j has the density C_j z^(q_j -
+ * 1) on its piece [lo, hi] ((0, 1/4] twice, [1/4, 4] twice, [4, inf); q =
+ * g-1, g-3/2, g-3/2, g-2, g-2; C = 1, 1, 1/2, 1/2, 1); vs[j] = its mass C_j
+ * z_e^q k_j (z_e = hi where q > 0, else lo), k_j = s_j / |q_j|, s_j =
+ * -expm1(-|q_j| log 16) on [1/4, 4] (1 on the others); the sampler takes k_j
+ * and s_j of the term it draws from mf__student_t_term. */
 MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p)
 {
     mf_real g = p->gamma, ln4 = MF_R(1.3862943611198906);
     int j;
-    for (j = 0; j < 12; ++j) p->vs[j] = MF_R(0.0);
+    for (j = 0; j < 5; ++j) p->vs[j] = MF_R(0.0);
+    if (g > MF_R(2.0)) p->vs[0] = MF_R(0.25) * MF_EXP(-g * MF_LOG((g - MF_R(1.0)) / g));
     if (!(g < MF_R(2.0))) return;
     for (j = 0; j < 5; ++j) {
-        mf_real q = g - (j == 0 ? MF_R(1.0) : j < 3 ? MF_R(1.5) : MF_R(2.0)), aq = MF_FABS(q), sj = MF_R(1.0), kj, le, lc;
+        mf_real kj, kk, sj, q = mf__student_t_term(g, j, &kj, &kk, &sj), le, lc;
         lc = j == 2 || j == 3 ? -MF_LOG(MF_R(2.0)) : MF_R(0.0);
         le = j == 2 || j == 4 ? ln4 : -ln4;
-        if (j == 2 || j == 3) {                 /* [1/4, 4]: log(hi/lo) = log 16 */
-            sj = -MF_EXPM1(-aq * MF_R(2.0) * ln4);
-            kj = MF_R(2.0) * ln4 / mf__x_over_expm1(-aq * MF_R(2.0) * ln4);
-            p->vs[8 + j] = sj;
-        } else kj = MF_R(1.0) / aq;
         p->vs[j] = MF_EXP(lc + q * le) * kj;
-        p->vs[5 + j] = q > MF_R(0.0) ? -kj : kj;
     }
 }

@@ -10,27 +10,26 @@
 /* wm with density D_w(wm) for the view w of any length (w.z >= 0), of the
  * kind d stretched by (ax, ay) (GTR: 1, 1; Student-t: its roughness). */
 MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2);
+/* The same for the untransformed d itself, stretched as its trait ISO says
+ * (1: not, 2: by (ax, ay)); the zero vector for a kind without the trait. */
+MF_INLINE mf_vec3 mf__iso_sample_visible_kind(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    int s = mf__ndf_iso(d->type) == 2;
+    return mf__iso_sample_visible_view(d, s ? d->ax : MF_R(1.0), s ? d->ay : MF_R(1.0), w, u1, u2);
+}
 /* @cold */
-/* The NDF-CDF inversion of an isotropic kind sampled numerically (GTR with
- * its alpha; Student-t with unit roughness, stretched by the caller): t is the
- * D-cos mass from the pole (theta = 0) to theta, q = 1 - t the mass beyond;
- * both are passed so each end stays accurate. Returns tan^2(theta). */
-MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
-{
-    return d->type == MF_NDF_GTR ? mf__gtr_tan2(d, t, q) : mf__student_t_tan2(d, t, q);
-}
+/* The NDF-CDF inversion of an isotropic kind sampled numerically (trait ISO
+ * of 05_ndf.h; GTR with its alpha, Student-t with unit roughness, stretched
+ * by the caller): t is the D-cos mass from the pole (theta = 0) to theta, q =
+ * 1 - t the mass beyond; both are passed so each end stays accurate. Returns
+ * tan^2(theta). */
+MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q) { return mf__ndf_iso_tan2(d, t, q); }
 /* Mass of D cos beyond the polar angle whose tan^2 is tan2 (inverse of the above). */
-MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2)
-{
-    return d->type == MF_NDF_GTR ? mf__gtr_tail(d, tan2) : mf__student_t_tail(d, tan2);
-}
+MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2) { return mf__ndf_iso_tail(d, tan2); }
 /* Exponent p of the substitution q = qc (1 - s^2)^p: it must cancel the tail
  * tan(theta) ~ q^-beta (GTR: beta = 1/2 at every gamma; Student-t:
  * beta = 1/(2 gamma - 2)), p = 2 / (1 - beta). */
-MF_INLINE mf_real mf__iso_p(const mf_ndf *d)
-{
-    return d->type == MF_NDF_GTR ? MF_R(4.0) : d->p.student_t.vndf_p;
-}
+MF_INLINE mf_real mf__iso_p(const mf_ndf *d) { return mf__ndf_iso_p(d); }
 
 /* State of the numerical VNDF sampler for one view (see mf__iso_sample_visible). */
 typedef struct mf__iso_vis {
@@ -154,7 +153,7 @@ MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real
 {
     mf_real cv, sv, cp, sp;
     mf_vec3 m;
-    if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (w.z < MF_R(0.0) || !mf__ndf_iso(d->type)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
     m = mf__iso_sample_visible(d, cv, sv, u1, u2);
     return mf_normalize(mf_vec3_make(ax * (cp * m.x - sp * m.y), ay * (sp * m.x + cp * m.y), m.z));

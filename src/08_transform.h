@@ -38,16 +38,9 @@ MF_INLINE mf_ndf mf_transformed(mf_ndf base, mf_mat2 M)
     mf_ndf d = base;
     mf_mat2 P = base.transformed ? mf_mat2_mul(M, base.M) : M;
     if (!mf_transform_is_valid(M) || !mf_transform_is_valid(P)) return base;
-    if (P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0)) {
-        d.transformed = 0;
-        d.M = d.Minv = P;
-        d.det = MF_R(1.0);
-        return d;
-    }
-    d.transformed = 1;
     d.M = P;
-    d.Minv = mf_mat2_inverse(P);
-    d.det = MF_FABS(mf_mat2_det(P));
+    d.idet = MF_R(1.0) / mf_mat2_det(P);   /* finite and nonzero: P is valid */
+    d.transformed = P.m00 == MF_R(1.0) && P.m01 == MF_R(0.0) && P.m10 == MF_R(0.0) && P.m11 == MF_R(1.0) ? 0 : 1;
     return d;
 }
 
@@ -90,13 +83,12 @@ MF_INLINE mf_ndf mf_gtr_anisotropic(mf_real alpha_x, mf_real alpha_y, mf_real ga
     return mf_transformed(mf_gtr(a, gamma), mf_mat2_make(a / ax, MF_R(0.0), MF_R(0.0), a / ay));
 }
 
-/* D of the untransformed distribution, homogeneous of degree -4 in wm: GGX
- * and Beckmann inline, the other kinds through the dispatch (05_ndf.h). */
+/* D of the untransformed distribution, homogeneous of degree -4 in wm: the
+ * inline kinds (GGX, Beckmann) inline, the others through the dispatch
+ * (05_ndf.h). */
 MF_FORCE_INLINE mf_real mf__D_base(const mf_ndf *d, mf_vec3 wm)
 {
-    if (d->type == MF_NDF_GGX) return mf_ggx_D(d->ax, d->ay, wm);
-    if (d->type == MF_NDF_BECKMANN) return mf_beckmann_D(d->ax, d->ay, wm);
-    return mf__ndf_D(d, wm);
+    return mf__ndf_D_inline(d, wm);
 }
 
 /* D(wm), 1/sr; 0 if wm.z <= 0. Transformed kinds by Eq. 4.14. */
@@ -106,7 +98,7 @@ MF_FORCE_INLINE mf_real mf_D(const mf_ndf *d, mf_vec3 wm)
     if (!d->transformed) return mf__D_base(d, wm);
     /* |det M| |M^T m|^-4 D(M^T m / |M^T m|) = |det M| mf__D_base(M^T m),
      * capped at MF_BIG (a small M makes |M^T m|^-4 overflow) */
-    r = d->det * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
+    r = mf__ndf_det(d) * mf__D_base(d, mf_mat2_apply_transpose(d->M, wm));
     return mf__cap(r);
 }
 

@@ -21,15 +21,14 @@
  *             Q the upper tail of P2 = I_w(g-1, 1/2)/2, w = (g-1)/(g-1+mu^2)
  *             (the closed form behind Ribardiere et al. 2017 Eq. 13-15; clamped at 0). */
 
-/* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. GGX and Beckmann
- * inline, the other kinds out of line; transformed kinds at M^-1 w (Eq. 4.4). */
+/* Smith Lambda(w). Symmetric in w.z; large but finite at w.z = 0. The inline
+ * kinds (GGX, Beckmann) inline, the others out of line; transformed kinds at
+ * M^-1 w (Eq. 4.4). */
 MF_FORCE_INLINE mf_real mf_lambda(const mf_ndf *d, mf_vec3 w)
 {
     /* Lambda depends on w only through tan(theta) and phi: no normalization */
-    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
-    if (d->type == MF_NDF_GGX) return mf_ggx_lambda(d->ax, d->ay, w);
-    if (d->type == MF_NDF_BECKMANN) return mf_beckmann_lambda(d->ax, d->ay, w);
-    return mf__ndf_lambda(d, w);
+    if (d->transformed) w = mf_mat2_apply(mf__ndf_Minv(d), w);
+    return mf__ndf_lambda_inline(d, w);
 }
 
 /* Monodirectional masking G1(w, wm) = chi+(w.wm) chi+(w.z) / (1 + Lambda(w)). */
@@ -55,12 +54,13 @@ MF_FORCE_INLINE mf_real mf__ggx_G2(mf_real ax, mf_real ay, mf_vec3 wo, mf_vec3 w
 /* 1 / (1 + Lambda(wo) + Lambda(wi)) for wo.z, wi.z > 0 (no facet checks) */
 MF_FORCE_INLINE mf_real mf__G2_up(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi)
 {
-    /* GGX as the straight path: with another hardware thread busy on the
-     * core, mf_G2 costs 1.24-1.38 instead of 1.36-1.70 times a plain G2
-     * loop without facing tests (bench ggx_G2_generic) */
-    if (MF__LIKELY(d->type == MF_NDF_GGX)) {
+    /* the Trowbridge-Reitz kinds (trait TR: GGX) as the straight path: with
+     * another hardware thread busy on the core, mf_G2 costs 1.24-1.38 instead
+     * of 1.36-1.70 times a plain G2 loop without facing tests (bench
+     * ggx_G2_generic) */
+    if (MF__LIKELY(mf__ndf_tr(d->type))) {
         /* M^-1 fixes z: the transformed directions stay above the horizon */
-        if (d->transformed) { wo = mf_mat2_apply(d->Minv, wo); wi = mf_mat2_apply(d->Minv, wi); }
+        if (d->transformed) { mf_mat2 Mi = mf__ndf_Minv(d); wo = mf_mat2_apply(Mi, wo); wi = mf_mat2_apply(Mi, wi); }
         return mf__ggx_G2(d->ax, d->ay, wo, wi);
     }
     return MF_R(1.0) / (MF_R(1.0) + mf_lambda(d, wo) + mf_lambda(d, wi));
@@ -79,15 +79,16 @@ MF_FORCE_INLINE mf_real mf_G2_separable(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi,
 }
 
 /* w . (-E_x, -E_y, 1): the projected area of the mean surface (unnormalized
- * mesonormal) toward w; w.z for every centered distribution. The mean slope of
- * a transformed distribution is M^-T times the base's (Eq. 4.16). */
+ * mesonormal) toward w; w.z for every centred kind (trait CEN). The mean slope
+ * of a transformed distribution is M^-T times the base's (Eq. 4.16). */
 MF_FORCE_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
 {
     mf_real mx, my;
-    if (d->type != MF_NDF_LEADR) return w.z;
-    mx = d->p.leadr.mx; my = d->p.leadr.my;
+    if (!mf__ndf_tilted(d->type)) return w.z;
+    mf__ndf_mean_slope(d, &mx, &my);
     if (d->transformed) {
-        mf_real tx = d->Minv.m00 * mx + d->Minv.m10 * my, ty = d->Minv.m01 * mx + d->Minv.m11 * my;
+        mf_mat2 Mi = mf__ndf_Minv(d);
+        mf_real tx = Mi.m00 * mx + Mi.m10 * my, ty = Mi.m01 * mx + Mi.m11 * my;
         mx = tx; my = ty;
     }
     return w.z - mx * w.x - my * w.y;
@@ -96,12 +97,12 @@ MF_FORCE_INLINE mf_real mf__mean_surface_proj(const mf_ndf *d, mf_vec3 w)
 /* Projected area of the visible microsurface, w.z (1 + Lambda(w)) =
  * integral <w.m> D(m) dm (thesis Eq. 3.9); finite and positive at w.z = 0.
  * For LEADR moments the mean surface is tilted: (w . (-E_x, -E_y, 1)) (1 +
- * Lambda(w)) (LEADR supplement Eq. 9). */
+ * Lambda(w)) (LEADR supplement Eq. 9; trait CEN 0). */
 /* the same for a known lo = Lambda(w) (the samplers share it) */
 MF_FORCE_INLINE mf_real mf__projected_area_l(const mf_ndf *d, mf_vec3 w, mf_real lo)
 {
     mf_real cz;
-    if (d->type == MF_NDF_LEADR) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + lo));
+    if (mf__ndf_tilted(d->type)) return mf__cap(mf_max(mf__mean_surface_proj(d, w), MF_R(1e-15)) * (MF_R(1.0) + lo));
     cz = mf_max(MF_FABS(w.z), MF_R(1e-15));
     return mf__cap(cz + cz * lo);
 }

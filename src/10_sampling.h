@@ -29,14 +29,11 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
-    if (!d->transformed)
-        return d->type == MF_NDF_GGX ? mf__ggx_sample_D(d, u1, u2)
-                 : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
+    if (!d->transformed) return mf__ndf_sample_D_inline(d, u1, u2);
     /* M^-T is linear and keeps z: GGX and Beckmann samples are normalized
      * once, after it */
-    m = d->type == MF_NDF_GGX ? mf__ggx_sample_D_dir(d, u1, u2)
-              : d->type == MF_NDF_BECKMANN ? mf__beckmann_sample_D_dir(d, u1, u2) : mf__ndf_sample_D(d, u1, u2);
-    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+    m = mf__ndf_sample_D_dir_inline(d, u1, u2);
+    return mf_normalize(mf_mat2_apply_transpose(mf__ndf_Minv(d), m));
 }
 
 /* wm with density mf_D_visible(d, w, wm); the zero vector if w.z < 0. GGX
@@ -48,18 +45,14 @@ MF_FORCE_INLINE mf_vec3 mf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
+    mf_mat2 Mi;
     u1 = mf__u01(u1); u2 = mf__u01(u2);
-    if (!d->transformed) {
-        if (d->type == MF_NDF_GGX) return mf_ggx_sample_visible(d->ax, d->ay, w, u1, u2);
-        if (d->type == MF_NDF_GTR) return mf__gtr_sample_visible(d, w, u1, u2);
-        if (d->type == MF_NDF_STUDENT_T) return mf__student_t_sample_visible(d, w, u1, u2);
-        return mf__ndf_sample_visible(d, w, u1, u2);
-    }
+    if (!d->transformed) return mf__ndf_sample_visible_inline(d, w, u1, u2);
     if (w.z < MF_R(0.0)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    w = mf_mat2_apply(d->Minv, w);   /* the samplers normalize their view themselves */
-    if (d->type == MF_NDF_GGX) m = mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
-    else m = mf__ndf_sample_visible(d, w, u1, u2);
-    return mf_normalize(mf_mat2_apply_transpose(d->Minv, m));
+    Mi = mf__ndf_Minv(d);
+    w = mf_mat2_apply(Mi, w);   /* the samplers normalize their view themselves */
+    m = mf__ndf_sample_visible_dir_inline(d, w, u1, u2);
+    return mf_normalize(mf_mat2_apply_transpose(Mi, m));
 }
 
 /* Visible normals as a smooth function of (u1, u2), for quadrature over the
@@ -70,10 +63,9 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
 MF_INLINE mf_vec3 mf__sample_visible_smooth(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_vec3 m;
-    int gtr = d->type == MF_NDF_GTR;
-    if (!gtr && d->type != MF_NDF_STUDENT_T) return mf_sample_visible(d, w, u1, u2);
+    if (!mf__ndf_iso(d->type)) return mf_sample_visible(d, w, u1, u2);
     if (!(w.z >= MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    if (d->transformed) w = mf_mat2_apply(d->Minv, w);
-    m = mf__iso_sample_visible_view(d, gtr ? MF_R(1.0) : d->ax, gtr ? MF_R(1.0) : d->ay, w, mf__u01(u1), mf__u01(u2));
-    return d->transformed ? mf_normalize(mf_mat2_apply_transpose(d->Minv, m)) : m;
+    if (d->transformed) w = mf_mat2_apply(mf__ndf_Minv(d), w);
+    m = mf__iso_sample_visible_kind(d, w, mf__u01(u1), mf__u01(u2));
+    return d->transformed ? mf_normalize(mf_mat2_apply_transpose(mf__ndf_Minv(d), m)) : m;
 }

@@ -87,7 +87,7 @@ MF_FORCE_INLINE mf_real mf__ggx_bounded_k(mf_real ax, mf_real ay, mf_vec3 wo)
     return (MF_R(1.0) - a2) * s2 / (s2 + a2 * wo.z * wo.z);   /* Eq. 5 */
 }
 /* 1 when the bounded sampler applies to d (untransformed GGX) */
-MF_FORCE_INLINE int mf__bounded_applies(const mf_ndf *d) { return d->type == MF_NDF_GGX && !d->transformed; }
+MF_FORCE_INLINE int mf__bounded_applies(const mf_ndf *d) { return mf__ndf_tr(d->type) && !d->transformed; }
 /* The bounded pdf's denominator 2 (k wo.z + t), t = |(ax wo.x, ay wo.y, wo.z)|
  * (Listing 2): pdf(wi) = D(wm) / that. */
 MF_FORCE_INLINE mf_real mf__ggx_bounded_den(const mf_ndf *d, mf_vec3 wo)

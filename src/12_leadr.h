@@ -127,8 +127,8 @@ MF_INLINE mf_real mf__leadr_grid_points(int n, mf_real *p1, mf_real *w1)
  * shifted to the slope distribution (Sec. 5.1, Cholesky of the covariance). */
 MF_INLINE mf_vec3 mf__leadr_grid_normal(const mf_ndf *d, mf_real pj, mf_real pk)
 {
-    mf_real sy2 = MF_SQRT(d->p.leadr.vy), r = d->p.leadr.cxy / (d->p.leadr.l00 * sy2);
-    mf_real sx = pj * d->p.leadr.l00 + d->p.leadr.mx;
+    mf_real l00 = MF_SQRT(d->p.leadr.vx), sy2 = MF_SQRT(d->p.leadr.vy), r = d->p.leadr.cxy / (l00 * sy2);
+    mf_real sx = pj * l00 + d->p.leadr.mx;
     mf_real sy = (r * pj + MF_SQRT(mf_max(MF_R(1.0) - r * r, MF_R(0.0))) * pk) * sy2 + d->p.leadr.my;
     return mf_normalize(mf_vec3_make(-sx, -sy, MF_R(1.0)));
 }

@@ -772,11 +772,13 @@ MFDEF mf_result mf_ltc_fit(mf_ltc_fit_result *out, const mf_ndf *d, mf_brdf_cos_
                            mf_real cos_theta_o, const mf_real *guess)
 {
     mf__fit_ctx c;
+    mf__ndf_prep pr;
     mf_real ct, st, sum = MF_R(0.0), fres = MF_R(0.0), p[3];
     mf_vec3 avg = mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     int i, j, n1 = 32, k;
     if (!out || (!d && !brdf) || !(cos_theta_o > MF_R(0.0)) || !(cos_theta_o <= MF_R(1.0)))
         return MF_ERROR_INVALID_ARGUMENT;
+    if (d) d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     ct = cos_theta_o; st = MF_SQRT(mf_max(MF_R(1.0) - ct * ct, MF_R(0.0)));
     c.d = d; c.brdf = brdf; c.ctx = ctx; c.wo = mf_vec3_make(st, MF_R(0.0), ct);
     c.n = n1 * n1;

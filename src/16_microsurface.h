@@ -687,7 +687,10 @@ static int mf__ms_ndf_ok(const mf_ndf *d)
     mf_real v;
     if (!(d->ax > MF_R(0.0) && d->ax < MF_BIG) || !(d->ay > MF_R(0.0) && d->ay < MF_BIG)) return 0;
     if (d->transformed && !mf_transform_is_valid(d->M)) return 0;
-    if (d->type == MF_NDF_LEADR && (d->p.leadr.mx != MF_R(0.0) || d->p.leadr.my != MF_R(0.0))) return 0;
+    if (mf__ndf_tilted(d->type)) {
+        mf__ndf_mean_slope(d, &m.x, &m.y);
+        if (m.x != MF_R(0.0) || m.y != MF_R(0.0)) return 0;
+    }
     m = mf_sample_D(d, MF_R(0.3), MF_R(0.2));
     v = mf_D(d, m);
     return m.z > MF_R(0.0) && m.z <= MF_R(1.0) && MF_FABS(m.x) <= MF_R(1.0) && MF_FABS(m.y) <= MF_R(1.0) &&

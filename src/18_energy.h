@@ -185,8 +185,10 @@ MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_r
 
 MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
 {
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
+    mf__ndf_prep pr;
+    if (!d || !mf__ndf_known(d->type) || panels < 1 || panels > 64) return MF_R(0.0);
     if (!(wo.z > MF_R(0.0)) || !(wo.z <= MF_R(1.0)) || !(wo.x == wo.x) || !(wo.y == wo.y)) return MF_R(0.0);
+    d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels);
 }
 
@@ -255,9 +257,7 @@ static inline mf_real mf__energy_lookup(int k, mf_real alpha, mf_real mu)
 MF_INLINE int mf__energy_kind(const mf_ndf *d)
 {
     if (!d || d->transformed) return -1;
-    if (d->type == MF_NDF_GGX) return 0;
-    if (d->type == MF_NDF_BECKMANN) return 1;
-    return -1;
+    return mf__ndf_energy_table(d->type) - 1;   /* trait ETAB */
 }
 
 MFDEF mf_real mf_albedo(const mf_ndf *d, mf_vec3 wo)
@@ -276,10 +276,10 @@ MFDEF mf_real mf_albedo_average(const mf_ndf *d)
 {
     int k = mf__energy_kind(d), i, j, n_phi;
     double e[17], sum = 0.0;
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT) return MF_R(0.0);
+    if (!d || !mf__ndf_known(d->type)) return MF_R(0.0);
     if (k >= 0) return mf__energy_lookup(k, MF_SQRT(d->ax * d->ay), MF_R(-1.0));
     /* other kinds: 17 nodes in x (mu = x^2), 8 azimuths unless isotropic */
-    n_phi = (!d->transformed && d->ax == d->ay && d->type != MF_NDF_LEADR && d->type != MF_NDF_TABULATED) ? 1 : 8;
+    n_phi = (!d->transformed && d->ax == d->ay && mf__ndf_axes(d->type)) ? 1 : 8;
     for (j = 0; j < n_phi; ++j) {
         mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
         for (i = 0; i < 17; ++i) e[i] = (double)mf_albedo_integrate(d, mf__energy_node_dir(i, 17, phi), 1);
@@ -324,7 +324,7 @@ MFDEF mf_result mf_albedo_table_build(mf_albedo_table *t, const mf_ndf *d, int n
     int i, j;
     double *row, sum = 0.0;
     if (t) { t->E = 0; t->n_mu = t->n_phi = 0; t->E_avg = MF_R(0.0); }
-    if (!t || !d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || n_mu < 2 || n_mu > 1024 ||
+    if (!t || !d || !mf__ndf_known(d->type) || n_mu < 2 || n_mu > 1024 ||
         n_phi < 1 || n_phi > 1024 || panels < 1 || panels > 64)
         return MF_ERROR_INVALID_ARGUMENT;
     t->E = (mf_real *)MF_MALLOC(sizeof(mf_real) * (size_t)n_mu * (size_t)n_phi);
@@ -385,7 +385,9 @@ MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_v
 /* ---- rough dielectrics */
 MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_real eta, int panels)
 {
-    if (!d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || panels < 1 || panels > 64) return MF_R(0.0);
+    mf__ndf_prep pr;
+    if (!d || !mf__ndf_known(d->type) || panels < 1 || panels > 64) return MF_R(0.0);
+    d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(wo.x == wo.x) || !(wo.y == wo.y) || !(MF_FABS(wo.z) <= MF_R(1.0))) return MF_R(0.0);
     if (!(wo.z != MF_R(0.0))) return MF_R(0.0);
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; }   /* as mf_dielectric_sample */
@@ -406,7 +408,7 @@ MFDEF mf_result mf_dielectric_ms_table_build(mf_dielectric_ms_table *t, const mf
     int i, s;
     double *row, avg[2], x, y;
     if (t) { t->E = 0; t->n_mu = 0; t->E1_avg = t->E2_avg = t->x = t->y = t->eta = MF_R(0.0); }
-    if (!t || !d || d->type < 0 || d->type >= MF_NDF_KIND_COUNT || n_mu < 2 || n_mu > 1024 ||
+    if (!t || !d || !mf__ndf_known(d->type) || n_mu < 2 || n_mu > 1024 ||
         panels < 1 || panels > 64 || !(eta > MF_R(1e-3)) || !(eta < MF_R(1e3)))
         return MF_ERROR_INVALID_ARGUMENT;
     t->E = (mf_real *)MF_MALLOC(sizeof(mf_real) * 2 * (size_t)n_mu);

@@ -151,6 +151,7 @@ static inline mf_ndf mft_family_beckmann(mf_real a, void *c) { (void)c; return m
 /* Distributions under test, built from a parameter table. */
 typedef struct { const char *name; int kind; double ax, ay, gamma; } mft_case;
 mf_ndf mft_make(const mft_case *c);
+mf_ndf mft_gtr(double alpha, double gamma);   /* mf_gtr through an mf_gtr_table */
 extern const mft_case mft_cases[];
 extern const int mft_ncases;
 

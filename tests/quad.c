@@ -95,7 +95,10 @@ typedef struct { const mf_ndf *d; double A[4], jac, cp, sp, vz, s; mf_vec3 v; in
 void mft_slope_map(const mf_ndf *d, double A[4])
 {
     double i00 = 1, i01 = 0, i10 = 0, i11 = 1;
-    if (d->transformed) { i00 = d->Minv.m00; i01 = d->Minv.m01; i10 = d->Minv.m10; i11 = d->Minv.m11; }
+    if (d->transformed) {   /* M^-1 in double */
+        double m00 = d->M.m00, m01 = d->M.m01, m10 = d->M.m10, m11 = d->M.m11, det = m00 * m11 - m01 * m10;
+        i00 = m11 / det; i01 = -m01 / det; i10 = -m10 / det; i11 = m00 / det;
+    }
     /* (Minv)^T = [i00 i10; i01 i11] */
     A[0] = i00 * d->ax; A[1] = i10 * d->ay;
     A[2] = i01 * d->ax; A[3] = i11 * d->ay;

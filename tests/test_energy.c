@@ -27,7 +27,7 @@ static double ref_albedo(const mf_ndf *d, mf_vec3 wo, int np)
     int p, i, q, j;
     if (!init) { mft_gl(8, gx, gw); init = 1; }
     if (a > 1.0) a = 1.0;
-    if (d->transformed) a *= sqrt((double)d->det);
+    if (d->transformed) a *= sqrt(fabs((double)d->M.m00 * d->M.m11 - (double)d->M.m01 * d->M.m10));
     for (p = 0; p < np; ++p)
         for (i = 0; i < 8; ++i) {
             double u = ((double)p + gx[i]) / np, rho = u / (1.0 - u), drho = 1.0 / ((1.0 - u) * (1.0 - u));

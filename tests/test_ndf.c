@@ -280,7 +280,7 @@ static void test_lambda_dense(void)
                     c.norm = a2 == 1.0 ? 1.0 / 3.14159265358979323846 :
                              c.g == 1.0 ? (a2 - 1.0) / (3.14159265358979323846 * log(a2)) :
                              (c.g - 1.0) * (a2 - 1.0) / (3.14159265358979323846 * (1.0 - pow(a2, 1.0 - c.g)));
-                    d = mf_gtr((mf_real)c.a, (mf_real)c.g);
+                    d = mft_gtr(c.a, c.g);
                 } else
                     d = mf_student_t((mf_real)c.a, (mf_real)c.a, (mf_real)c.g);
                 for (it = 0; it < 12; ++it) {
@@ -323,7 +323,7 @@ static void test_visible_dense(void)
     char msg[128];
     for (ia = 0; ia < 3; ++ia)
         for (ig = 0; ig < 8; ++ig) {
-            mf_ndf d = ig < 5 ? mf_gtr((mf_real)ag[ia], (mf_real)gg[ig]) : mf_student_t((mf_real)ag[ia], (mf_real)ag[ia], (mf_real)gs[ig - 5]);
+            mf_ndf d = ig < 5 ? mft_gtr(ag[ia], gg[ig]) : mf_student_t((mf_real)ag[ia], (mf_real)ag[ia], (mf_real)gs[ig - 5]);
             for (it = 0; it < 3; ++it) {
                 double t = th[it] * 3.14159265358979323846 / 180.0, got;
                 mf_vec3 v = mf_vec3_make((mf_real)sin(t), 0, (mf_real)cos(t));
@@ -337,8 +337,149 @@ static void test_visible_dense(void)
     printf("    integral D_visible, GTR and Student-t at alpha 1e-3..0.3, up to 89.9 deg: worst |1 - I| %.2e\n", worst);
 }
 
+
+/* The mf_ndf value type stays small: 64 bytes in float (128 in double). */
+static void test_ndf_size(void)
+{
+    printf("    sizeof(mf_ndf) = %d bytes (%s)\n", (int)sizeof(mf_ndf), MFT_REAL_NAME);
+    MFT_CHECK(sizeof(mf_ndf) <= MFT_TOL(128, 64), "sizeof(mf_ndf) <= 64 bytes in float, 128 in double");
+}
+
+static int vec_same(mf_vec3 a, mf_vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/* A GTR of an mf_gtr_table and mf_gtr by value (whose Lambda builds the same
+ * rule at each call) agree to the bit, transformed too; the table's builder
+ * rejects NULL and mf_gtr_table_ndf(NULL) is no distribution. */
+static void test_gtr_table(void)
+{
+    const double as[] = { 1e-4, 0.02, 0.3, 1.0 }, gs[] = { 0.0, 0.5, 1.0, 1.5, 2.5, 3.0, 3.7, 4.0 };
+    int i, j, k, bad = 0, n = 0;
+    for (i = 0; i < 4; ++i)
+        for (j = 0; j < 8; ++j) {
+            mf_gtr_table t;
+            mf_ndf v = mf_gtr((mf_real)as[i], (mf_real)gs[j]), tb, vt, tt;
+            mf_mat2 M = mf_mat2_make(MF_R(1.3), MF_R(0.2), MF_R(-0.1), MF_R(0.8));
+            MFT_CHECK(mf_gtr_table_build(&t, (mf_real)as[i], (mf_real)gs[j]) == MF_SUCCESS, "mf_gtr_table_build");
+            tb = mf_gtr_table_ndf(&t);
+            vt = mf_transformed(v, M); tt = mf_transformed(tb, M);
+            for (k = 0; k < 24; ++k) {
+                double th = 1.55 * k / 23.0, ph = 0.7 * k;
+                mf_vec3 w = mft_dir(th, ph), m = mft_dir(0.9 * th, 2.0 - ph);
+                mf_real u1 = (mf_real)((k * 0.61803398875) - floor(k * 0.61803398875)), u2 = (mf_real)(0.13 + 0.031 * k);
+                ++n;
+                if (mf_lambda(&v, w) != mf_lambda(&tb, w) || mf_D(&v, m) != mf_D(&tb, m) ||
+                    mf_lambda(&vt, w) != mf_lambda(&tt, w) || mf_D(&vt, m) != mf_D(&tt, m) ||
+                    !vec_same(mf_sample_D(&v, u1, u2), mf_sample_D(&tb, u1, u2)) ||
+                    !vec_same(mf_sample_visible(&v, w, u1, u2), mf_sample_visible(&tb, w, u1, u2)) ||
+                    !vec_same(mf_sample_visible(&vt, w, u1, u2), mf_sample_visible(&tt, w, u1, u2)))
+                    ++bad;
+            }
+        }
+    printf("    GTR by value against its mf_gtr_table: %d of %d points differ\n", bad, n);
+    MFT_CHECK(bad == 0, "mf_gtr and mf_gtr_table_ndf: the same bits (Lambda, D, both samplers, transformed)");
+    MFT_CHECK(mf_gtr_table_build(NULL, MF_R(0.3), MF_R(1.5)) == MF_ERROR_INVALID_ARGUMENT, "mf_gtr_table_build(NULL)");
+    {
+        mf_ndf z = mf_gtr_table_ndf(NULL);
+        mf_vec3 w = mft_dir(0.5, 0.3), s = mf_sample_visible(&z, w, MF_R(0.3), MF_R(0.6));
+        MFT_CHECK(mf_D(&z, w) == 0 && mf_lambda(&z, w) == 0 && s.x == 0 && s.y == 0 && s.z == 0,
+                  "mf_gtr_table_ndf(NULL): every function returns 0");
+    }
+}
+
+/* The envelope of GTR's mixture sampler (mode 1), derived from a^(2(1-g)),
+ * a and 4^g, against its definition evaluated in double (mf__gtr_envelope:
+ * masses C_j z_e^q k_j, kk_j, s_j of the seven power laws). */
+static void test_gtr_envelope(void)
+{
+    const double as[] = { 1e-4, 1e-3, 0.01, 0.05, 0.15, 0.2499 }, gs[] = { 0.05, 0.5, 0.5001, 0.9999, 1.0, 1.2, 1.5, 1.5003, 1.8, 1.99 };
+    double worst = 0.0;
+    int i, j, jj, n = 0;
+    for (i = 0; i < 6; ++i)
+        for (j = 0; j < 10; ++j) {
+            mf_ndf d = mf_gtr((mf_real)as[i], (mf_real)gs[j]);
+            mf_real vs[19];
+            double g, a, L, ln4 = log(4.0), ends[6];
+            if ((d.mode & 3) != 1) continue;
+            ++n;
+            g = (double)d.p.gtr.gamma; a = (double)d.ax; L = 2.0 * log(a);
+            ends[0] = -1e300; ends[1] = L - ln4; ends[2] = L + ln4; ends[3] = -ln4; ends[4] = ln4; ends[5] = 1e300;
+            mf__gtr_envelope(&d, vs);
+            for (jj = 0; jj < 7; ++jj) {
+                int pc = jj == 6 ? 4 : (jj + 1) >> 1;
+                double c = jj == 0 || jj == 2 ? 2.0 : jj == 1 || jj == 4 ? 1.5 : jj == 3 ? 1.0 : jj == 5 ? 0.5 : 0.0;
+                double q = c - g, lo = ends[pc], hi = ends[pc + 1], lc, sj = 1.0, kj, mass, e;
+                lc = pc == 0 ? -L : pc == 1 ? -0.5 * L - log(2.0) : pc == 3 ? -log(2.0) : 0.0;
+                if (pc == 0 || pc == 4) kj = 1.0 / fabs(q);
+                else {
+                    sj = -expm1(-fabs(q) * (hi - lo));
+                    kj = q != 0.0 ? sj / fabs(q) : hi - lo;
+                }
+                mass = exp(lc + q * (q > 0.0 ? hi : lo)) * kj;
+                e = fabs((double)vs[jj] - mass) / mass;
+                if (e > worst) worst = e;
+                e = fabs(fabs((double)vs[7 + jj]) - kj) / kj;
+                if (e > worst) worst = e;
+                if ((vs[7 + jj] < 0) != (q > 0.0)) worst = 1.0;
+                if (jj >= 1 && jj <= 5) {
+                    e = fabs((double)vs[13 + jj] - sj) / (sj > 0.0 ? sj : 1.0);
+                    if (e > worst) worst = e;
+                }
+            }
+        }
+    printf("    GTR mixture envelope (%d cases): worst relative error %.2e\n", n, worst);
+    MFT_CHECK(n > 20, "the envelope cases are in mode 1");
+    MFT_CHECK(worst < MFT_TOL(1e-12, 3e-6), "GTR mixture envelope against its definition");
+}
+
+/* Every kind's inline front end agrees with the cold dispatch, and a kind
+ * unknown to MF__NDF_KINDS is no distribution: 0, and no sample (05_ndf.h). */
+static void test_dispatch(void)
+{
+    mf_ndf k[6], u;
+    int i, j, bad = 0;
+    k[0] = mf_beckmann(MF_R(0.3), MF_R(0.2)); k[1] = mf_ggx(MF_R(0.3), MF_R(0.2));
+    k[2] = mf_gtr(MF_R(0.3), MF_R(2.5)); k[3] = mf_student_t(MF_R(0.3), MF_R(0.2), MF_R(3.0));
+    k[4] = mf_leadr_ndf(mf_leadr_with_roughness(mf_leadr_from_slope(MF_R(0.1), MF_R(-0.05)), MF_R(0.3), MF_R(0.2)));
+    k[5] = mf_ggx(MF_R(0.5), MF_R(0.5));
+    for (i = 0; i < 5; ++i) {
+        MFT_CHECK(k[i].type == i && mf__ndf_known(k[i].type), "kinds in the order of MF__NDF_KINDS");
+        for (j = 0; j < 16; ++j) {
+            mf_vec3 w = mft_dir(1.5 * j / 15.0, 0.4 * j);
+            mf_real u1 = (mf_real)(0.05 + 0.06 * j), u2 = (mf_real)(0.9 - 0.05 * j);
+            if (mf_D(&k[i], w) != mf__ndf_D(&k[i], w) || mf_lambda(&k[i], w) != mf__ndf_lambda(&k[i], w) ||
+                !vec_same(mf_sample_D(&k[i], u1, u2), mf__ndf_sample_D(&k[i], u1, u2)) ||
+                !vec_same(mf_sample_visible(&k[i], w, u1, u2), mf__ndf_sample_visible(&k[i], w, u1, u2)))
+                ++bad;
+        }
+    }
+    MFT_CHECK(bad == 0, "inline front ends and the cold dispatch agree for every kind");
+    MFT_CHECK(mf__ndf_tr(MF_NDF_GGX) && !mf__ndf_tr(MF_NDF_STUDENT_T) && mf__ndf_tilted(MF_NDF_LEADR) &&
+              !mf__ndf_tilted(MF_NDF_GGX) && mf__ndf_iso(MF_NDF_GTR) == 1 && mf__ndf_iso(MF_NDF_STUDENT_T) == 2 &&
+              mf__ndf_iso(MF_NDF_BECKMANN) == 0 && mf__ndf_ltc(MF_NDF_GTR) && !mf__ndf_ltc(MF_NDF_TABULATED) &&
+              mf__ndf_energy_table(MF_NDF_GGX) == 1 && mf__ndf_energy_table(MF_NDF_BECKMANN) == 2 &&
+              !mf__ndf_axes(MF_NDF_LEADR), "the traits of MF__NDF_KINDS");
+    for (i = 0; i < 3; ++i) {
+        mf_vec3 w = mft_dir(0.6, 0.2), m = mft_dir(0.3, 1.0), s, sv, z;
+        mf_real mx = 1, my = 1;
+        u = k[i == 2 ? 5 : i];
+        u.type = (unsigned char)(i == 0 ? MF_NDF_KIND_COUNT : 99 + i);
+        if (i == 1) u = mf_transformed(u, mf_mat2_make(MF_R(1.2), MF_R(0.3), MF_R(0.0), MF_R(0.9)));
+        s = mf_sample_D(&u, MF_R(0.4), MF_R(0.7)); sv = mf_sample_visible(&u, w, MF_R(0.4), MF_R(0.7));
+        z = mf__sample_visible_smooth(&u, w, MF_R(0.4), MF_R(0.7));
+        mf__ndf_mean_slope(&u, &mx, &my);
+        MFT_CHECK(!mf__ndf_known(u.type) && mf_D(&u, m) == 0 && mf_lambda(&u, w) == 0 && mf_brdf(&u, w, m) == 0 &&
+                  s.x == 0 && s.y == 0 && s.z == 0 && sv.x == 0 && sv.y == 0 && sv.z == 0 && z.z == 0 &&
+                  mx == 0 && my == 0 && !mf__ndf_tilted(u.type),
+                  "an unknown kind: D, Lambda, BRDF 0 and no sample");
+    }
+}
+
 void test_ndf(void)
 {
+    test_ndf_size();
+    test_dispatch();
+    test_gtr_table();
+    test_gtr_envelope();
     test_gtr_sqrt();
     test_lambda_dense();
     test_visible_dense();

@@ -104,7 +104,7 @@ static void gtr_student_grid(void)
     mft_reject_calls = mft_reject_tries = 0;
     for (i = 0; i < 6; ++i)
         for (j = 0; j < 10; ++j, ++n) {
-            mf_ndf d = mf_gtr((mf_real)ag[i], (mf_real)gg[j]);
+            mf_ndf d = mft_gtr(ag[i], gg[j]);
             snprintf(name, sizeof name, "grid gtr_%g_g%g", ag[i], gg[j]);
             mft_sampler_check(name, &d, mf_vec3_make(0, 0, 1), 0, 20000, 0, 7000 + n);
             mft_sampler_check(name, &d, mft_dir(0.7, 0.2), 1, 20000, 0, 7300 + n);
@@ -120,7 +120,7 @@ static void gtr_student_grid(void)
         }
     /* proposals per sample (pilot samples included), per distribution and overall */
     for (i = 0; i < 6 * 10 + 4 * 7; ++i) {
-        mf_ndf d = i < 60 ? mf_gtr((mf_real)ag[i / 10], (mf_real)gg[i % 10]) : mf_student_t((mf_real)as[(i - 60) / 7], (mf_real)as[(i - 60) / 7], (mf_real)gs[(i - 60) % 7]);
+        mf_ndf d = i < 60 ? mft_gtr(ag[i / 10], gg[i % 10]) : mf_student_t((mf_real)as[(i - 60) / 7], (mf_real)as[(i - 60) / 7], (mf_real)gs[(i - 60) % 7]);
         mft_rng r;
         long c0 = mft_reject_calls, t0 = mft_reject_tries;
         int s, v;
@@ -153,7 +153,7 @@ static void gtr_student_points(void)
     int i, j;
     char name[64];
     for (i = 0; i < 9; ++i) {
-        mf_ndf d = i < 6 ? mf_gtr((mf_real)pg[i][0], (mf_real)pg[i][1]) : mf_student_t((mf_real)ps[i - 6][0], (mf_real)ps[i - 6][0], (mf_real)ps[i - 6][1]);
+        mf_ndf d = i < 6 ? mft_gtr(pg[i][0], pg[i][1]) : mf_student_t((mf_real)ps[i - 6][0], (mf_real)ps[i - 6][0], (mf_real)ps[i - 6][1]);
         snprintf(name, sizeof name, "%s_%g_g%g", i < 6 ? "gtr" : "student", i < 6 ? pg[i][0] : ps[i - 6][0], i < 6 ? pg[i][1] : ps[i - 6][1]);
         mft_sampler_check(name, &d, mf_vec3_make(0, 0, 1), 0, 40000, 0, 5000 + i);
         for (j = 0; j < 4; ++j) mft_sampler_check(name, &d, mft_dir(th[j], 0.3 + j), 1, 40000, 0, 5100 + 10 * i + j);
@@ -173,7 +173,7 @@ static void gtr_student_mixture_power(void)
     int i, j;
     char name[64];
     for (i = 0; i < 8; ++i) {
-        mf_ndf d = cfg[i][0] == 0.0 ? mf_gtr((mf_real)cfg[i][1], (mf_real)cfg[i][2])
+        mf_ndf d = cfg[i][0] == 0.0 ? mft_gtr(cfg[i][1], cfg[i][2])
                                     : mf_student_t((mf_real)cfg[i][1], (mf_real)cfg[i][1], (mf_real)cfg[i][2]);
         snprintf(name, sizeof name, "mixture %s_%g_g%g", cfg[i][0] == 0.0 ? "gtr" : "student", cfg[i][1], cfg[i][2]);
         for (j = 0; j < 3; ++j) mft_sampler_check(name, &d, mft_dir(th[j], 0.4 + j), 1, 1000000, 0, 8100 + 10 * i + j);

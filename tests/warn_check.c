@@ -35,6 +35,13 @@ int main(void)
     k[1] = mf_ggx(MF_R(0.2), MF_R(0.3));
     k[2] = mf_gtr(MF_R(0.2), MF_R(2.5));
     k[3] = mf_student_t(MF_R(0.2), MF_R(0.3), MF_R(3.0));
+    {
+        mf_gtr_table gt;
+        mf_ndf g;
+        s += (mf_real)(mf_gtr_table_build(&gt, MF_R(0.2), MF_R(2.5)) == MF_SUCCESS);
+        g = mf_gtr_table_ndf(&gt);
+        s += mf_lambda(&g, wo);
+    }
     for (i = 0; i < 4; ++i) {
         const mf_ndf *d = &k[i];
         mf_vec3 wm = mf_sample_visible(d, wo, MF_R(0.3), MF_R(0.7)), wd = mf_sample_D(d, MF_R(0.3), MF_R(0.7));
