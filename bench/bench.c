@@ -1296,6 +1296,9 @@ static double b_tf_rgb_metal(const mf_ndf *d)
     (void)d;
     LOOP(tf_rgb_sum(g_wo[i].z, MF_R(800.0) * g_u1[i], eb, kb));
 }
+static double b_charlie_fit(const mf_ndf *d) { (void)d; LOOP(mf_charlie_lambda_fit(MF_R(0.05) + MF_R(0.95) * g_u1[i], g_wo[i])); }
+static double b_charlie_exact(const mf_ndf *d) { (void)d; LOOP(mf_charlie_lambda(MF_R(0.05) + MF_R(0.95) * g_u1[i], g_wo[i])); }
+static double b_charlie_D(const mf_ndf *d) { (void)d; LOOP(mf_charlie_D(MF_R(0.05) + MF_R(0.95) * g_u1[i], g_wm[i])); }
 static void bench_lobes(void)
 {
     double tb, to;
@@ -1313,4 +1316,7 @@ static void bench_lobes(void)
     run_pair(b_tf_spectral3, b_tf_rgb, NULL, &tb, &to);
     printf("bench thin_film_rgb_soap %.1f three_wavelengths=%.1f ratio=%.2f\n", to, tb, to / tb);
     printf("bench thin_film_rgb_oxide_on_gold %.1f\n", run(b_tf_rgb_metal, NULL));
+    run_pair(b_charlie_fit, b_charlie_exact, NULL, &tb, &to);
+    printf("bench charlie_lambda_exact %.1f published_fit=%.1f ratio=%.2f\n", to, tb, to / tb);
+    printf("bench charlie_D %.2f\n", run(b_charlie_D, NULL));
 }

@@ -46,7 +46,7 @@ MF_INLINE mf_real mf__eon_gpi_fast(mf_real mu)
  * furnace (rho = 1) integrates to 1 for every view and sigma.
  * rho: albedo in [0, 1] per channel (clamped); sigma: OpenPBR's diffuse
  * roughness in [0, 1] (clamped; not Oren-Nayar's angle). 0 when wo.z <= 0 or
- * wi.z <= 0 or on NaN. Reciprocal. */
+ * wi.z <= 0 or on NaN or infinite input. Reciprocal. */
 MF_INLINE mf_real mf_eon_brdf(mf_vec3 wo, mf_vec3 wi, mf_real rho, mf_real sigma)
 {
     mf_real mo = wo.z, mi = wi.z, s, st, A, eavg, rho_ms, fss, fms;
@@ -62,7 +62,7 @@ MF_INLINE mf_real mf_eon_brdf(mf_vec3 wo, mf_vec3 wi, mf_real rho, mf_real sigma
     eavg = A * (MF_R(1.0) + MF__EON_C2 * sigma);
     rho_ms = rho * rho * eavg / (MF_R(1.0) - rho * (MF_R(1.0) - eavg));
     fms = rho_ms * sigma * A * (MF__EON_C1 - mf__eon_gpi(mo)) * (MF__EON_C1 - mf__eon_gpi(mi)) * MF__EON_INV_C1_C2;
-    if (!(fss == fss) || !(fms == fms)) return MF_R(0.0);
+    if (!(MF_FABS(fss) < MF_BIG) || !(fms < MF_BIG)) return MF_R(0.0);   /* NaN or infinite directions */
     return mf_max(rho * fss + fms, MF_R(0.0)) * MF_INV_PI;
 }
 
@@ -136,7 +136,7 @@ MF_INLINE mf__eon_ltc mf__eon_ltc_make(mf_vec3 wo, mf_real sigma)
     L.pu = r > MF_R(0.0) ? MF_POW(r, MF_R(0.1)) * (MF_R(0.162925) + mu * (MF_R(-0.372058) + (MF_R(0.538233) - MF_R(0.290822) * mu) * mu))
                          : MF_R(0.0);
     /* the frame: x along wo's azimuth (any, fixed, at normal incidence) */
-    if (l2 > MF_R(1e-30)) {
+    if (l2 > MF_R(1e-30) && l2 < MF_BIG) {
         mf_real il = MF_R(1.0) / MF_SQRT(l2);
         L.tx = wo.x * il; L.ty = wo.y * il;
     } else { L.tx = MF_R(1.0); L.ty = MF_R(0.0); }
@@ -179,14 +179,17 @@ MF_INLINE mf_real mf_eon_pdf(mf_vec3 wo, mf_vec3 wi, mf_real sigma)
  * mf_eon_brdf(.., rho_c, ..) wi.z / pdf), lobe MF_LOBE_REFLECTION. u1, u2 in
  * [0, 1] (1 is read as the largest value below 1); every u gives a sample
  * with wi.z > 0 and pdf > 0 (the lifted height and wi.z are computed without
- * cancellation near the disk's rim and the clip). No sample when wo.z <= 0. */
+ * cancellation near the disk's rim and the clip). No sample when wo.z <= 0
+ * or wo is not finite. */
 MF_INLINE mf_sample mf_eon_sample(mf_vec3 wo, mf_real rho, mf_real sigma, mf_real u1, mf_real u2)
 {
     mf__eon_ltc L;
     mf_sample r;
     mf_vec3 w;
     mf_real umax = MF_R(1.0) - MF_R(0.5) * MF_EPS, pc, f, l;
-    if (!(wo.z > MF_R(0.0)) || !(sigma == sigma) || !(u1 == u1) || !(u2 == u2)) return mf__no_sample();
+    if (!(wo.z > MF_R(0.0)) || !(wo.z < MF_BIG) || !(wo.x * wo.x + wo.y * wo.y < MF_BIG) || !(sigma == sigma)
+        || !(u1 == u1) || !(u2 == u2))
+        return mf__no_sample();
     sigma = mf_clamp(sigma, MF_R(0.0), MF_R(1.0));
     L = mf__eon_ltc_make(wo, sigma);
     u1 = mf_clamp(u1, MF_R(0.0), umax);

@@ -9,7 +9,9 @@
  *    (lost samples in their own bin), its record, u corners, its variance;
  *  - thin film: the Airy sum against a transfer-matrix (characteristic
  *    matrix) reference in complex double written here, zero thickness, the
- *    RGB form against spectral integration with the CIE tables. */
+ *    RGB form against spectral integration with the CIE tables;
+ *  - Charlie sheen: normalization, the exact Lambda against a 2D quadrature
+ *    of 1 + Lambda, the published fit's distance to it, NDF sampling. */
 #include "mf_test.h"
 #include <stdlib.h>
 #include "tools/cie_1931_d65.h"
@@ -595,10 +597,188 @@ static void test_thin_film(void)
     }
 }
 
+/* ---- Charlie sheen -------------------------------------------------------- */
+
+/* 1 + Lambda = (1/mu) int D(m) <w.m> dm, by 2D quadrature over m = (theta_m,
+ * phi) written here: t = m.z in [s, 1] (w sees every azimuth: GL in t and a
+ * 32-point rule in phi over [0, pi]) and t in [0, s] with t = s (1 - u^2)
+ * (GL in u), phi over [0, phi0(t)] where w.m > 0 (GL in phi): the kinks on
+ * panel edges, D as the paper's formula */
+static double ref_charlie_onep(double alpha, double mu)
+{
+    double k = 1.0 / alpha, c = (2.0 + k) / (2.0 * 3.14159265358979323846), s = sqrt(1.0 - mu * mu);
+    double x[16], w[16], sum = 0.0;
+    int P = 48, p, i, j;
+    mft_gl(16, x, w);
+    if (!(s > 0.0)) return 1.0;
+    for (p = 0; p < P; ++p)
+        for (i = 0; i < 16; ++i) {
+            /* upper part: t in [s, 1] */
+            double t = s + (1.0 - s) * (p + x[i]) / P, st = sqrt(1.0 - t * t), D = c * pow(st, k), in = 0.0;
+            for (j = 0; j < 16; ++j) {
+                double ph = 3.14159265358979323846 * x[j];
+                in += w[j] * 3.14159265358979323846 * (s * st * cos(ph) + mu * t);
+            }
+            sum += 2.0 * (1.0 - s) / P * w[i] * D * in;
+            /* lower part: t = s (1 - u^2), dt = 2 s u du */
+            {
+                double u = (p + x[i]) / P, tl = s * (1.0 - u * u), sl = sqrt(1.0 - tl * tl), Dl = c * pow(sl, k), in2 = 0.0;
+                double cphi = -mu * tl / (s * sl), ph0 = acos(cphi < -1.0 ? -1.0 : cphi > 1.0 ? 1.0 : cphi);
+                for (j = 0; j < 16; ++j) {
+                    double ph = ph0 * x[j];
+                    in2 += w[j] * ph0 * (s * sl * cos(ph) + mu * tl);
+                }
+                sum += 2.0 * 2.0 * s * u / P * w[i] * Dl * in2;
+            }
+        }
+    return sum / mu;
+}
+
+static void test_charlie(void)
+{
+    static const double al[10] = { 1.0, 0.7, 0.5, 0.3, 0.15, 0.07, 0.03, 0.01, 0.003, 0.001 };
+    static const double th[10] = { 0.0, 10.0, 30.0, 45.0, 60.0, 70.0, 80.0, 85.0, 89.0, 89.99 };
+    double worst = 0.0, wa = 0, wt = 0, worst_norm = 0.0, fit_l = 0.0, fit_g = 0.0, fl_a = 0, fl_m = 0, fg_a = 0, fg_m = 0;
+    int i, j, k;
+    for (i = 0; i < 10; ++i) {
+        /* normalization int D m.z dm = 1 (t = m.z, 1024 panels of 16 nodes: D is
+         * as narrow as 1/sqrt(1000) in t) */
+        double x[16], w[16], nsum = 0.0;
+        int p;
+        mft_gl(16, x, w);
+        for (p = 0; p < 1024; ++p)
+            for (k = 0; k < 16; ++k) {
+                double t = (p + x[k]) / 1024.0;
+                mf_vec3 m = mf_vec3_make((mf_real)sqrt(1.0 - t * t), MF_R(0.0), (mf_real)t);
+                nsum += 2.0 * 3.14159265358979323846 * w[k] / 1024.0 * (double)mf_charlie_D((mf_real)al[i], m) * t;
+            }
+        if (!(fabs(nsum - 1.0) <= worst_norm)) worst_norm = mft_finite(nsum) ? fabs(nsum - 1.0) : 1.0;
+        for (j = 0; j < 10; ++j) {
+            double mu = cos(rad(th[j])), want = ref_charlie_onep(al[i], mu);
+            double got = 1.0 + (double)mf_charlie_lambda((mf_real)al[i], mft_dir(rad(th[j]), 0.3 * j));
+            double e = fabs(got - want) / want;
+            if (!(e <= worst)) { worst = mft_finite(e) ? e : 1.0; wa = al[i]; wt = th[j]; }
+        }
+    }
+    /* the published fit against the exact Lambda: view cosines 0.05-0.6 and 0-1 */
+    for (i = 0; i <= 40; ++i)
+        for (j = 0; j <= 110; ++j) {
+            double a = 0.07 + 0.93 * i / 40.0, mu = 0.05 + 0.005 * j;
+            mf_vec3 v = mf_vec3_make((mf_real)sqrt(1.0 - mu * mu), MF_R(0.0), (mf_real)mu);
+            double le = (double)mf_charlie_lambda((mf_real)a, v), lf = (double)mf_charlie_lambda_fit((mf_real)a, v);
+            double el = fabs(lf - le) / le, eg = fabs(1.0 / (1.0 + lf) - 1.0 / (1.0 + le));
+            if (el > fit_l) { fit_l = el; fl_a = a; fl_m = mu; }
+            if (eg > fit_g) { fit_g = eg; fg_a = a; fg_m = mu; }
+        }
+    printf("    charlie: |int D cos - 1| %.3g; exact Lambda vs 2D quadrature of 1 + Lambda %.3g relative (worst alpha %g, %g deg);\n"
+           "      the published fit (alpha 0.07-1, mu 0.05-0.6): Lambda up to %.3g relative (alpha %.3g, mu %.3g), G1 up to %.3g (alpha %.3g, mu %.3g)\n",
+           worst_norm, worst, wa, wt, fit_l, fl_a, fl_m, fit_g, fg_a, fg_m);
+    /* the quadrature of sqrt(1 - t^2) at alpha 1 converges slowly at t = 1 */
+    MFT_NEAR(worst_norm, 0.0, 0.0, MFT_TOL(1e-8, 1e-5), "charlie: D normalized, alpha 1e-3..1");
+    MFT_NEAR(worst, 0.0, 0.0, MFT_TOL(1e-5, 3e-5), "charlie: exact Lambda within 1e-5 of quadrature of 1 + Lambda (alpha 1e-3..1, views to 89.99 deg)");
+    MFT_CHECK(fit_g > 0.01, "charlie: the published fit is measurably off (the exact Lambda is not the fit)");
+    MFT_CHECK(mf_charlie_lambda(MF_R(0.3), mf_vec3_make(0, 0, 1)) == 0 && mf_charlie_lambda(MF_R(0.3), mf_vec3_make(1, 0, 0)) >= MF_R(1e20)
+              && mf_charlie_lambda(MF_R(0.3), mf_vec3_make(0.6f, 0, -0.8f)) == mf_charlie_lambda(MF_R(0.3), mf_vec3_make(0.6f, 0, 0.8f)),
+              "charlie: Lambda 0 at the normal, huge at grazing, symmetric in w.z");
+    /* NDF sampling: chi-square of m.z^2 (uniform bins of sin^{k+2}) and phi */
+    {
+        static const double as[3] = { 1.0, 0.3, 0.02 };
+        double worst_z = 0.0;
+        int bad = 0;
+        for (i = 0; i < 3; ++i) {
+            double obs[64], ex[64], z;
+            int dof, n = 64000;
+            mft_rng r;
+            mft_seed(&r, 777 + i);
+            for (k = 0; k < 64; ++k) { obs[k] = 0.0; ex[k] = n / 64.0; }
+            for (k = 0; k < n; ++k) {
+                mf_vec3 m = mf_charlie_sample_D((mf_real)as[i], (mf_real)mft_u01(&r), (mf_real)mft_u01(&r));
+                double st = sqrt((double)m.x * m.x + (double)m.y * m.y), ph = atan2((double)m.y, (double)m.x);
+                /* the fraction of projected area below sin theta is sin^{k+2}: 8 bins of it x 8 of phi */
+                int b1 = (int)(pow(st, 1.0 / as[i] + 2.0) * 8.0), b2;
+                if (ph < 0) ph += 6.283185307179586;
+                b2 = (int)(ph / 6.283185307179586 * 8.0);
+                if (!(m.z > 0)) ++bad;
+                if (b1 > 7) b1 = 7;
+                if (b2 > 7) b2 = 7;
+                obs[b1 * 8 + b2] += 1.0;
+            }
+            z = mft_chi2(obs, ex, 64, &dof);
+            if (fabs(z) > worst_z) worst_z = fabs(z);
+        }
+        {
+            mf_vec3 m0 = mf_charlie_sample_D(MF_R(0.3), MF_R(1.0), MF_R(1.0)), m1 = mf_charlie_sample_D(MF_R(0.3), MF_R(0.0), MF_R(0.0));
+            if (!(m0.z > 0) || !(m1.z > 0)) ++bad;
+        }
+        MFT_CHECK(bad == 0, "charlie: sampled normals above the horizon, u corners included");
+        MFT_CHECK(worst_z < 4.5, "charlie: NDF sampling chi-square (alpha 1, 0.3, 0.02)");
+    }
+}
+
+/* ---- robustness: every new function on special values ---------------------- */
+static int fin01(mf_real v) { return v >= MF_R(0.0) && v <= MF_R(1.0); }
+static int finpos(mf_real v) { return v >= MF_R(0.0) && v <= MF_BIG; }
+static void test_lobes_robust(void)
+{
+    volatile double zero = 0.0;
+    mf_real inf_ = (mf_real)(1.0 / zero), nan_ = (mf_real)(zero / zero);
+    mf_real v[12];
+    mf_vec3 d[10];
+    int i, j, k, l, bad = 0, n = 0;
+    v[0] = 0; v[1] = -v[0]; v[2] = MF_R(1e-30); v[3] = MF_R(1e-7); v[4] = MF_R(0.5); v[5] = 1; v[6] = MF_R(1.5);
+    v[7] = MF_R(1e30); v[8] = inf_; v[9] = -1; v[10] = nan_; v[11] = -inf_;
+    d[0] = mf_vec3_make(0, 0, 1); d[1] = mft_dir(1.0, 0.5); d[2] = mft_dir(1.5706, 2.0); d[3] = mf_vec3_make(1, 0, 0);
+    d[4] = mf_vec3_make(0, 0, -1); d[5] = mf_vec3_make(0, 0, 0); d[6] = mf_vec3_make(3, 4, 5); d[7] = mf_vec3_make(nan_, 0, 1);
+    d[8] = mf_vec3_make(inf_, 0, 1); d[9] = mft_dir(1e-7, 0.0);
+    for (i = 0; i < 12; ++i)
+        for (j = 0; j < 12; ++j) {
+            mf_real rgb[3], eb[3], kb[3];
+            for (k = 0; k < 12; ++k) {
+                mf_vec3 m;
+                ++n;
+                if (!fin01(mf_fresnel_f82(v[i], v[j], v[k]))) ++bad;
+                if (!fin01(mf_eon_albedo(v[i], v[j], v[k])) || !fin01(mf_eon_albedo_fast(v[i], v[j], v[k]))) ++bad;
+                if (!fin01(mf_fresnel_thin_film(v[i], v[j], v[k], MF_R(300.0), MF_R(1.5), MF_R(0.1), MF_R(550.0)))) ++bad;
+                if (!fin01(mf_fresnel_thin_film(MF_R(0.7), MF_R(1.0), v[i], v[j], v[k], MF_R(0.5), MF_R(550.0)))) ++bad;
+                if (!fin01(mf_fresnel_thin_film(MF_R(0.7), MF_R(1.0), MF_R(1.4), MF_R(200.0), v[i], v[j], v[k]))) ++bad;
+                m = mf_charlie_sample_D(v[i], v[j], v[k]);
+                if (!(m.z > 0) || !(m.z <= 1) || !mft_finite(m.x) || !mft_finite(m.y)) ++bad;
+            }
+            if (!fin01(mf_fresnel_f82_average(v[i], v[j])) || !fin01(mf_eon_albedo_average(v[i], v[j]))) ++bad;
+            eb[0] = v[i]; eb[1] = MF_R(1.5); eb[2] = v[j]; kb[0] = v[j]; kb[1] = 0; kb[2] = v[i];
+            mf_fresnel_thin_film_rgb(MF_R(0.6), MF_R(1.0), MF_R(1.33), MF_R(400.0), eb, kb, rgb);
+            for (l = 0; l < 3; ++l) if (!fin01(rgb[l])) ++bad;
+            mf_fresnel_thin_film_rgb(v[i], v[j], MF_R(1.33), v[(i + j) % 12], eb, kb, rgb);
+            for (l = 0; l < 3; ++l) if (!fin01(rgb[l])) ++bad;
+        }
+    for (i = 0; i < 10; ++i)
+        for (j = 0; j < 10; ++j)
+            for (k = 0; k < 12; ++k) {
+                mf_sample r;
+                ++n;
+                if (!finpos(mf_eon_brdf(d[i], d[j], v[k], MF_R(0.5))) || !finpos(mf_eon_brdf(d[i], d[j], MF_R(0.5), v[k]))) ++bad;
+                if (!finpos(mf_eon_pdf(d[i], d[j], v[k]))) ++bad;
+                if (!finpos(mf_charlie_D(v[k], d[i])) || !finpos(mf_charlie_lambda(v[k], d[i])) || !finpos(mf_charlie_lambda_fit(v[k], d[i]))) ++bad;
+                for (l = 0; l < 12; ++l) {
+                    r = mf_eon_sample(d[i], v[k], MF_R(0.7), v[l], v[j]);
+                    if (r.lobe != MF_LOBE_NONE && (!(r.pdf > 0) || !(r.pdf < MF_BIG) || !finpos(r.weight) || !(r.wi.z > 0)
+                                                   || !mft_finite(r.wi.x) || !mft_finite(r.wi.y))) ++bad;
+                    if (r.lobe == MF_LOBE_NONE && (r.pdf != 0 || r.weight != 0)) ++bad;
+                    r = mf_eon_sample(d[i], MF_R(0.7), v[k], v[l], MF_R(0.3));
+                    if (r.lobe != MF_LOBE_NONE && (!(r.pdf > 0) || !(r.pdf < MF_BIG) || !finpos(r.weight) || !(r.wi.z > 0)
+                                                   || !mft_finite(r.wi.x) || !mft_finite(r.wi.y))) ++bad;
+                }
+            }
+    printf("    robustness: %d special-value combinations, %d out of range\n", n, bad);
+    MFT_CHECK(bad == 0, "lobes: every new function finite and in range on special values (0, -0, tiny, huge, inf, NaN, negative)");
+}
+
 void test_material_lobes(void)
 {
     test_f82();
     test_eon_eval();
     test_eon_sample();
     test_thin_film();
+    test_charlie();
+    test_lobes_robust();
 }
