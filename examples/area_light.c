@@ -22,7 +22,7 @@
  * What column 3 shows is the method's error, written under the image: the
  * fitted lobes (clamped cosines, transformed) fall off faster than GGX, so
  * LTC is darker away from the highlights (on the floor the specular part
- * falls 50-85% short there, about 10% of the total) and where the light
+ * falls 30-85% short there, about 10% of the total) and where the light
  * nears a sphere's horizon; elsewhere the error of the fit changes sign as
  * the view and the light's place in the lobe vary over a sphere, and its
  * zero crossings draw curves (in |LTC - MC| they looked like seams). The
