@@ -53,11 +53,12 @@ typedef struct ex_image {
     float *lin;            /* w * h * 3, linear radiance: PFM and EXR */
     unsigned char *rgb;    /* w * h * 3, display: PNG */
     int cut;               /* labels that the image edge cut (ex_write fails on any) */
+    char first_cut[64];    /* the first of them */
 } ex_image;
 
 static inline int ex_image_init(ex_image *im, int w, int h)
 {
-    im->w = w; im->h = h; im->cut = 0;
+    im->w = w; im->h = h; im->cut = 0; im->first_cut[0] = 0;
     im->lin = (float *)calloc((size_t)w * (size_t)h * 3u, sizeof(float));
     im->rgb = (unsigned char *)calloc((size_t)w * (size_t)h * 3u, 1);
     if (im->lin && im->rgb) return 0;
@@ -162,7 +163,7 @@ static inline void ex_colormap(ex_image *im, int x0, int y0, int w, int h, doubl
  * above and two below the capitals, so that it does not read as an I */
 static const unsigned char ex_font[95][7] = {
     {0,0,0,0,0,0,0}, {4,4,4,4,4,0,4}, {10,10,0,0,0,0,0}, {10,10,31,10,31,10,10}, {4,15,20,14,5,30,4}, {24,25,2,4,8,19,3}, {12,18,20,8,21,18,13}, {4,4,8,0,0,0,0},
-    {2,4,8,8,8,4,2}, {8,4,2,2,2,4,8}, {0,4,21,14,21,4,0}, {0,4,4,31,4,4,0}, {0,0,0,0,12,4,8}, {0,0,0,31,0,0,0}, {0,0,0,0,0,12,12}, {0,1,2,4,8,16,0},
+    {4,8,8,8,8,8,4}, {4,2,2,2,2,2,4}, {0,4,21,14,21,4,0}, {0,4,4,31,4,4,0}, {0,0,0,0,12,4,8}, {0,0,0,31,0,0,0}, {0,0,0,0,0,12,12}, {0,1,2,4,8,16,0},
     {14,17,19,21,25,17,14}, {4,12,4,4,4,4,14}, {14,17,1,2,4,8,31}, {31,2,4,2,1,17,14}, {2,6,10,18,31,2,2}, {31,16,30,1,1,17,14}, {6,8,16,30,17,17,14}, {31,1,2,4,8,8,8},
     {14,17,17,14,17,17,14}, {14,17,17,15,1,2,12}, {0,12,12,0,12,12,0}, {0,12,12,0,12,4,8}, {2,4,8,16,8,4,2}, {0,0,31,0,31,0,0}, {8,4,2,1,2,4,8}, {14,17,1,2,4,0,4},
     {14,17,23,21,23,16,15}, {14,17,17,31,17,17,17}, {30,17,17,30,17,17,30}, {14,17,16,16,16,17,14}, {30,17,17,17,17,17,30}, {31,16,16,30,16,16,31}, {31,16,16,30,16,16,16}, {14,17,16,23,17,17,15},
@@ -196,9 +197,10 @@ static inline int ex_text_width(const char *s, int scale) { return (int)strlen(s
 static inline void ex_text(ex_image *im, int x, int y, int scale, const char *s)
 {
     int i, gx, gy, sx, sy, bw = ex_text_width(s, scale) + 4 * scale;
-    if (x - 2 * scale < 0 || y - 2 * scale < 0 || x - 2 * scale + bw > im->w || y + 9 * scale > im->h) {
-        ++im->cut;
-        fprintf(stderr, "label cut by the image edge: \"%s\" at (%d, %d)\n", s, x, y);
+    if ((x - 2 * scale < 0 || y - 2 * scale < 0 || x - 2 * scale + bw > im->w || y + 9 * scale > im->h) && !im->cut++) {
+        size_t n = strlen(s) < sizeof im->first_cut ? strlen(s) : sizeof im->first_cut - 1;
+        memcpy(im->first_cut, s, n);
+        im->first_cut[n] = 0;
     }
     ex_shade(im, x - 2 * scale, y - 2 * scale, bw, 11 * scale);
     for (i = 0; s[i]; ++i) {
@@ -238,18 +240,21 @@ static inline void ex_fill(ex_image *im, int x0, int y0, int w, int h, const uns
             memcpy(im->rgb + 3 * ((size_t)y * (size_t)im->w + (size_t)x), c, 3);
 }
 
-/* A tick label: the value with three significant digits ("%.3g"), and
- * "0" for values within 1e-9 of the range of zero (no "-1.39e-17"). */
-static inline void ex_tick_text(char *buf, size_t n, double v, double range)
+/* A tick label: "0" for values within 1e-9 of the range of zero (no
+ * "-1.39e-17"); else three significant digits, trailing zeros kept
+ * ("%#.3g": 1.10, 0.500) when exact is set (a data value such as a
+ * maximum), dropped ("%.3g": 0.25, 1) for round axis steps. */
+static inline void ex_tick_text(char *buf, size_t n, double v, double range, int exact)
 {
-    if (v < 0.0 ? -v < 1e-9 * range : v < 1e-9 * range) v = 0.0;
-    snprintf(buf, n, "%.3g", v);
+    if (v < 0.0 ? -v < 1e-9 * range : v < 1e-9 * range) snprintf(buf, n, "0");
+    else snprintf(buf, n, exact ? "%#.3g" : "%.3g", v);
 }
 
 /* A horizontal colour bar at (x, y), w x h pixels, for values vmin..vmax
  * through the colour map, with tick marks and labels (three significant
- * digits) at both ends and in the middle, and the label (what the values
- * are) above it. The bar takes 12 pixels above it and 14 below. */
+ * digits, trailing zeros kept) at both ends and in the middle, and the
+ * label (what the values are) above it. The bar takes 12 pixels above it
+ * and 14 below. */
 static inline void ex_colorbar_map(ex_image *im, int x, int y, int w, int h, double vmin, double vmax, ex_cmap_fn map,
                                    const char *label)
 {
@@ -264,7 +269,7 @@ static inline void ex_colorbar_map(ex_image *im, int x, int y, int w, int h, dou
     for (k = 0; k < 3; ++k) {
         int tx = x + k * (w - 1) / 2, lx;
         ex_fill(im, tx, y + h, 1, 3, white);
-        ex_tick_text(buf, sizeof buf, vmin + (vmax - vmin) * 0.5 * (double)k, vmax - vmin);
+        ex_tick_text(buf, sizeof buf, vmin + (vmax - vmin) * 0.5 * (double)k, vmax - vmin, 1);
         lx = tx - (k == 0 ? 0 : k == 1 ? ex_text_width(buf, 1) / 2 : ex_text_width(buf, 1) - 1);
         ex_text(im, lx, y + h + 5, 1, buf);
     }
@@ -377,7 +382,10 @@ static inline int ex_write(const ex_image *im, const char *base)
 {
     char path[1024];
     int err = 0;
-    if (im->cut) { fprintf(stderr, "%s: %d label(s) cut by the image edge\n", base, im->cut); err = 1; }
+    if (im->cut) {
+        fprintf(stderr, "%s: %d label(s) cut by the image edge, the first \"%s\"\n", base, im->cut, im->first_cut);
+        err = 1;
+    }
     snprintf(path, sizeof path, "%s.png", base);
     if (ex_write_png(path, im->rgb, im->w, im->h)) err = 1; else printf("wrote %s (%d x %d, labelled)\n", path, im->w, im->h);
     snprintf(path, sizeof path, "%s.pfm", base);

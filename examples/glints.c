@@ -214,8 +214,8 @@ int main(int argc, char **argv)
             if (s) ex_label(&im, col * PW + 4, s * PH + PH - 12, 1, "RMS dev. %.3g%% of IBM", 100.0 * sqrt(dev[s - 1][col] / np) / m);
         }
     }
-    ex_label(&im, 4, 2 * PH - 38, 1, "flake normals: GTR %.3g, gamma 1.5", (double)gtr_alpha);
-    ex_label(&im, 4, 2 * PH - 26, 1, "flake roughness: Beckmann %.3g", (double)flake_alpha);
+    ex_label(&im, 4, 2 * PH - 38, 1, "normals: GTR %.3g, gamma 1.5", (double)gtr_alpha);
+    ex_label(&im, 4, 2 * PH - 26, 1, "flakes: Beckmann %.3g", (double)flake_alpha);
     err = ex_write(&im, base);
     ex_image_free(&im);
     printf("%d x %d panels of %d x %d; the tile spans %g, %g, 1/%g and 1/%g of the panel width (%.3g, %.3g, %.3g, %.3g "

@@ -303,8 +303,8 @@ int main(int argc, char **argv)
         ex_text(&im, px * PW + 4, 16, 1, "LEADR moments");
         ex_text(&im, px * PW + 4, PH + 4, 1, "naive mip-mapped normals");
     }
-    ex_label(&im, 4, H - 12, 1, "8 waves, RMS slope %.3f; base Beckmann alpha %g", (double)MF_SQRT(top.E_xx + top.E_yy - base_alpha * base_alpha),
-             (double)base_alpha);
+    ex_label(&im, 4, H - 24, 1, "8 waves, RMS slope %.3g", (double)MF_SQRT(top.E_xx + top.E_yy - base_alpha * base_alpha));
+    ex_label(&im, 4, H - 12, 1, "base Beckmann alpha %.3g", (double)base_alpha);
     err = ex_write(&im, base);
     ex_image_free(&im);
     printf("%d x %d panels of %d x %d: the tile spans 1/%g, 1/%g, 1/%g, 1/%g of the panel width\n",

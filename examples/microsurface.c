@@ -5,22 +5,27 @@
  * by a collimated beam at theta_i = 1 rad with mirror facets, and the light
  * leaving after the first bounce is compared with the single-scattering Smith
  * model (mf_brdf cos with the height-correlated G2, integrated over each
- * sensor cell by mf_gonio_model). One row per distribution, four panels:
- *   1. the height field (gray, mean -+ 2.5 standard deviations);
+ * sensor cell by mf_gonio_model). One row per distribution, four panels
+ * over a strip that holds their scales:
+ *   1. the height field (gray, mean -+ 2.5 standard deviations; its bar in
+ *      standard deviations below);
  *   2. the measured first-bounce lobe, f cos per steradian over the sensor's
  *      equal-solid-angle cells, seen from above (orthographic projection of
- *      the hemisphere; the light comes from the right, the lobe lies left);
- *   3. the model over the same cells, same color scale;
- *   4. the in-plane slice (phi = 0 and pi) from theta_o = -90 to +90 degrees:
- *      measured cells (red), model cells (green), the exact model mf_brdf cos
- *      (white); the light arrives at the right edge's side.
+ *      the hemisphere, dotted rings at theta_o = 30 and 60 degrees; the
+ *      light comes from the right, the lobe lies left);
+ *   3. the model over the same cells, same colour scale (one colour bar
+ *      under panels 2 and 3, ticks with three significant digits);
+ *   4. the in-plane slice (phi = 0 and pi) from theta_o = -90 to +90 degrees,
+ *      axes with tick labels: measured cells (red), model cells (green), the
+ *      exact model mf_brdf cos (white); the light arrives at the right
+ *      edge's side.
  * The list is one line per distribution (add an mf_ndf there to see it); the
  * last one is a two-lobe tabulated distribution (mf_tabulated_build).
  * Prints, per distribution, the Schwarz statistics, the first-bounce energy
  * (measured and model), the energy of the longer paths and the relative L1
- * distance of the lobes. Writes base.png (panels and rows labelled, a colour
- * bar per row for the lobes), base.pfm (the same display values, linear) and,
- * built with OpenEXR, base.exr.
+ * distance of the lobes. Writes base.png (panels and rows labelled, scales
+ * under each row), base.pfm (the same display values, linear) and, built
+ * with OpenEXR, base.exr.
  *
  *   cc -O2 -I. examples/microsurface.c -o microsurface -lm   (from the repo root)
  *   ./microsurface [base]                                    (default: microsurface)
@@ -36,8 +41,15 @@
 #define SIZE 256          /* height field */
 #define P 256             /* panel size in pixels */
 #define GAP 4
+#define STRIP 40          /* under each row: colour bars and axis titles */
+#define RH (P + STRIP)    /* row height */
 #define PANELS 4
 #define W (PANELS * P + (PANELS - 1) * GAP)
+/* the slice plot's axes inside panel 4 (offsets from its top left) */
+#define PL 34             /* left: room for the y tick labels */
+#define PR (P - 8)
+#define PT 44             /* top: below the legend */
+#define PB (P - 18)       /* bottom: room for the x tick labels */
 #define RINGS 16
 #define RAYS 600000
 #define THETA_I 1.0
@@ -58,28 +70,50 @@ static void ramp(float t, float *c)
     c[0] = b[0] / 255.0f; c[1] = b[1] / 255.0f; c[2] = b[2] / 255.0f;
 }
 
-/* a polar map of per-cell values (divided by the cell solid angle) */
+/* gray for t in [0, 1]: the height panel's map */
+static void gray(double t, unsigned char out[3])
+{
+    t = t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
+    out[0] = out[1] = out[2] = (unsigned char)(255.0 * t + 0.5);
+}
+
+/* a polar map of per-cell values (divided by the cell solid angle), with
+ * dotted rings at theta_o = 30 and 60 degrees (radius sin theta_o) */
 static void polar(float *img, int x0, int y0, const mf_gonio *g, const mf_real *v, double vmax)
 {
     int x, y;
     double om = (double)mf_gonio_cell_solid_angle(g);
     for (y = 0; y < P; ++y)
         for (x = 0; x < P; ++x) {
-            double u = (2.0 * x + 1.0) / P - 1.0, w = 1.0 - (2.0 * y + 1.0) / P, r2 = u * u + w * w;
+            double u = (2.0 * x + 1.0) / P - 1.0, w = 1.0 - (2.0 * y + 1.0) / P, r2 = u * u + w * w, r = sqrt(r2);
             float c[3] = { 0.08f, 0.08f, 0.08f };
             if (r2 < 1.0) {
                 int cell = mf_gonio_cell(g, mf_vec3_make((mf_real)u, (mf_real)w, (mf_real)sqrt(1.0 - r2)));
                 if (cell >= 0) ramp((float)((double)v[cell] / om / vmax), c);
+                if ((fabs(r - 0.5) < 1.0 / P || fabs(r - 0.8660254037844386) < 1.0 / P) && (x + y) % 6 < 3)
+                    c[0] = c[1] = c[2] = 0.55f;
             }
             put(img, x0 + x, y0 + y, c[0], c[1], c[2]);
         }
+}
+
+/* a line of the plot, clipped to the panel */
+static void hline(float *img, int x0, int x1, int y, float v)
+{
+    int x;
+    for (x = x0; x <= x1; ++x) put(img, x, y, v, v, v);
+}
+static void vline(float *img, int x, int y0, int y1, float v)
+{
+    int y;
+    for (y = y0; y <= y1; ++y) put(img, x, y, v, v, v);
 }
 
 int main(int argc, char **argv)
 {
     const char *base = argc > 1 ? argv[1] : "microsurface";
     entry list[8];   /* room for two more */
-    double row_vmax[8];
+    double row_vmax[8], row_ymax[8], row_ystep[8];
     int n = 0, e, H, status = 0;
     ex_image im;
     float *img;
@@ -109,7 +143,7 @@ int main(int argc, char **argv)
         }
     }
 
-    H = n * P + (n - 1) * GAP;
+    H = n * RH + (n - 1) * GAP;
     if (!h || ex_image_init(&im, W, H) || mf_gonio_init(&g, RINGS) != MF_SUCCESS) { fprintf(stderr, "out of memory\n"); return 1; }
     img = im.lin;
     model = (mf_real *)malloc(sizeof(mf_real) * (size_t)g.cells);
@@ -118,8 +152,9 @@ int main(int argc, char **argv)
     for (e = 0; e < n; ++e) {
         mf_microsurface_stats st;
         const mf_ndf *d = &list[e].d;
-        int y0 = e * (P + GAP), x, y, c;
+        int y0 = e * (RH + GAP), x, y, c;
         double lo = 1e30, hi = -1e30, vmax = 0.0, l1 = 0.0, sm = 0.0, om = (double)mf_gonio_cell_solid_angle(&g);
+        row_vmax[e] = row_ymax[e] = 1.0; row_ystep[e] = 0.5;   /* scales of a row that failed */
         /* 200 re-matching iterations; NULL options: the defaults */
         if (mf_microsurface_generate_ex(d, SIZE, 200, (mf_u64)(e + 1), NULL, h, &st) != MF_SUCCESS ||
             mf_gonio_measure(&g, h, SIZE, &cfg) != MF_SUCCESS || mf_gonio_model(&g, d, wi, 8, model) != MF_SUCCESS) {
@@ -152,38 +187,76 @@ int main(int argc, char **argv)
         /* 2, 3. measured and model lobes */
         polar(img, P + GAP, y0, &g, g.first, vmax);
         polar(img, 2 * (P + GAP), y0, &g, model, vmax);
-        /* 4. in-plane slice */
+        /* 4. in-plane slice: theta_o from -90 (phi = pi) to 90 degrees
+         * (phi = 0) across [PL, PR], f cos per sr from 0 at PB up to ymax at
+         * PT, a nice round value above the lobe's largest cell */
         {
-            int x0 = 3 * (P + GAP);
+            int x0 = 3 * (P + GAP), pw = PR - PL;
+            double ystep = ex_nice_step(1.1 * vmax, 4), ymax = ceil(1.1 * vmax / ystep) * ystep, t;
+            row_ymax[e] = ymax; row_ystep[e] = ystep;
             for (y = 0; y < P; ++y)
                 for (x = 0; x < P; ++x) put(img, x0 + x, y0 + y, 0.08f, 0.08f, 0.08f);
-            for (x = 0; x < P; ++x) {
-                double th = (((double)x + 0.5) / P - 0.5) * 3.14159265358979323846;
+            for (t = 0.0; t <= ymax * (1.0 + 1e-9); t += ystep) {   /* grid and y ticks */
+                int yy = PB - (int)floor(t / ymax * (PB - PT) + 0.5);
+                hline(img, x0 + PL, x0 + PR, y0 + yy, t == 0.0 ? 0.6f : 0.2f);
+                hline(img, x0 + PL - 3, x0 + PL - 1, y0 + yy, 0.6f);
+            }
+            for (c = -90; c <= 90; c += 30) {                          /* x ticks */
+                int xx = PL + (int)floor((c + 90) / 180.0 * pw + 0.5);
+                vline(img, x0 + xx, y0 + PT, y0 + PB, c == 0 ? 0.35f : 0.2f);
+                vline(img, x0 + xx, y0 + PB + 1, y0 + PB + 3, 0.6f);
+            }
+            vline(img, x0 + PL, y0 + PT, y0 + PB, 0.6f);
+            for (x = 0; x <= pw; ++x) {
+                double th = ((double)x / pw - 0.5) * 3.14159265358979323846;
                 mf_vec3 wo = mf_vec3_make((mf_real)sin(th), MF_R(0.0), (mf_real)cos(th));
                 int cell = mf_gonio_cell(&g, wo);
                 double vm = cell >= 0 ? (double)g.first[cell] / om : 0.0, vd = cell >= 0 ? (double)model[cell] / om : 0.0;
                 double ve = (double)(mf_brdf(d, wo, wi) * wo.z);
-                int ym = P - 1 - (int)(vm / (1.25 * vmax) * (P - 1)), yd = P - 1 - (int)(vd / (1.25 * vmax) * (P - 1));
-                int ye = P - 1 - (int)(ve / (1.25 * vmax) * (P - 1));
-                if (ye >= 0) put(img, x0 + x, y0 + ye, 1.0f, 1.0f, 1.0f);
-                if (yd >= 0) { put(img, x0 + x, y0 + yd, 0.1f, 0.9f, 0.1f); if (yd + 1 < P) put(img, x0 + x, y0 + yd + 1, 0.1f, 0.9f, 0.1f); }
-                if (ym >= 0) { put(img, x0 + x, y0 + ym, 1.0f, 0.15f, 0.1f); if (ym + 1 < P) put(img, x0 + x, y0 + ym + 1, 1.0f, 0.15f, 0.1f); }
+                int ym = PB - (int)floor(vm / ymax * (PB - PT) + 0.5), yd = PB - (int)floor(vd / ymax * (PB - PT) + 0.5);
+                int ye = PB - (int)floor(ve / ymax * (PB - PT) + 0.5);
+                if (ye >= PT) put(img, x0 + PL + x, y0 + ye, 1.0f, 1.0f, 1.0f);
+                if (yd >= PT) { put(img, x0 + PL + x, y0 + yd, 0.1f, 0.9f, 0.1f); if (yd + 1 <= PB) put(img, x0 + PL + x, y0 + yd + 1, 0.1f, 0.9f, 0.1f); }
+                if (ym >= PT) { put(img, x0 + PL + x, y0 + ym, 1.0f, 0.15f, 0.1f); if (ym + 1 <= PB) put(img, x0 + PL + x, y0 + ym + 1, 1.0f, 0.15f, 0.1f); }
             }
         }
+        /* the strip under the row: background */
+        for (y = P; y < RH; ++y)
+            for (x = 0; x < W; ++x) put(img, x, y0 + y, 0.0f, 0.0f, 0.0f);
     }
     ex_direct(&im, 0, 0, W, H);
     for (e = 0; e < n; ++e) {
-        int y0 = e * (P + GAP);
+        int y0 = e * (RH + GAP), x0 = 3 * (P + GAP), c, pw = PR - PL;
+        double t;
+        char buf[32];
         ex_text(&im, 6, y0 + 6, 1, list[e].name);
         ex_text(&im, P + GAP + 6, y0 + 6, 1, "measured, first bounce");
         ex_text(&im, 2 * (P + GAP) + 6, y0 + 6, 1, "Smith model");
-        ex_text(&im, 3 * (P + GAP) + 6, y0 + 6, 1, "slice phi = 0, pi: -90..90 deg");
-        ex_text(&im, 3 * (P + GAP) + 6, y0 + 18, 1, "red measured, green model");
-        ex_text(&im, 3 * (P + GAP) + 6, y0 + 30, 1, "white exact f cos");
-        ex_colorbar(&im, 2 * (P + GAP) + 8, y0 + P - 26, P - 16, 8,
-                    row_vmax[e], "f cos per sr");
+        for (c = 1; c <= 2; ++c) {   /* the rings of panels 2 and 3, on the light's side */
+            ex_text(&im, c * (P + GAP) + P / 2 + P / 4 + 3, y0 + P / 2 + 3, 1, "30");
+            ex_text(&im, c * (P + GAP) + P / 2 + (int)(0.866 * P / 2) + 3, y0 + P / 2 + 3, 1, "60");
+        }
+        ex_text(&im, x0 + 6, y0 + 6, 1, "slice phi = 0, pi");
+        ex_text(&im, x0 + 6, y0 + 18, 1, "red measured, green model");
+        ex_text(&im, x0 + 6, y0 + 30, 1, "white exact f cos");
+        for (t = 0.0; t <= row_ymax[e] * (1.0 + 1e-9); t += row_ystep[e]) {   /* y tick labels */
+            int yy = PB - (int)floor(t / row_ymax[e] * (PB - PT) + 0.5);
+            ex_tick_text(buf, sizeof buf, t, row_ymax[e], 0);
+            ex_text(&im, x0 + PL - 5 - ex_text_width(buf, 1), y0 + yy - 3, 1, buf);
+        }
+        for (c = -90; c <= 90; c += 30) {                                    /* x tick labels */
+            int xx = PL + (int)floor((c + 90) / 180.0 * pw + 0.5);
+            snprintf(buf, sizeof buf, "%d", c);
+            ex_text(&im, x0 + xx - ex_text_width(buf, 1) / 2, y0 + PB + 6, 1, buf);
+        }
+        /* the strip: scales and axis titles */
+        ex_colorbar_map(&im, 8, y0 + P + 16, P - 16, 6, -2.5, 2.5, gray, "height - mean, in standard deviations");
+        ex_colorbar(&im, P + GAP + 8, y0 + P + 16, 2 * P + GAP - 16, 6, row_vmax[e],
+                    "f cos per sr, panels 2 and 3; rings: theta_o = 30, 60 deg");
+        ex_text(&im, x0 + 6, y0 + P + 6, 1, "x: theta_o in deg (phi = pi left)");
+        ex_text(&im, x0 + 6, y0 + P + 18, 1, "y: f cos per sr");
+        ex_label(&im, x0 + 6, y0 + P + 30, 1, "light at theta_i = %g rad", THETA_I);
     }
-    ex_label(&im, 6, H - 14, 1, "theta_i = %g rad, light from the right", THETA_I);
     if (ex_write(&im, base)) status = 1;
     mf_gonio_release(&g);
     mf_tabulated_release(&tab);
