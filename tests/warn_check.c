@@ -249,6 +249,8 @@ int main(void)
         s += mf_fresnel_thin_film(wo.z, MF_R(1.0), MF_R(1.33), MF_R(300.0), MF_R(1.5), MF_R(0.0), MF_R(550.0));
         mf_fresnel_thin_film_rgb(wo.z, MF_R(1.0), MF_R(1.33), MF_R(300.0), eb, kb, rgb);
         s += rgb[0] + rgb[1] + rgb[2];
+        s += mf_charlie_D(MF_R(0.4), wo) + mf_charlie_lambda(MF_R(0.4), wo) + mf_charlie_lambda_fit(MF_R(0.4), wo);
+        s += mf_charlie_sample_D(MF_R(0.4), MF_R(0.3), MF_R(0.6)).z;
     }
 #ifndef MF_NO_DEPRECATED
     /* the deprecated 0.3 names still compile and run (warnings off here only) */

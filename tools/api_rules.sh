@@ -81,8 +81,8 @@ function complain(msg) { print "api rules: " name ": " msg; bad = 1 }
     for (i = 2; i <= np; ++i)
         if (P[i] ~ /^mf_(ndf|ibm|ltc|tabulated|albedo_table|dielectric_ms_table|ltc_table|leadr_map|gonio|ltc_fit_result) \*/) complain("the filled object " N[i] " is not first")
     # fallible operations return mf_result
-    if ((name ~ /_(build|build_ex|load|save|fit|generate|generate_ex|measure|init|from_heights|from_normals|from_ndf|export_rgba16f|model)$/ ||
-         name == "mf_microsurface_integrate") && ret != "mf_result")
+    if ((name ~ /_(build|build_ex|load|save|generate|generate_ex|measure|init|from_heights|from_normals|from_ndf|export_rgba16f|model)$/ ||
+         name == "mf_microsurface_integrate" || name == "mf_ltc_fit") && ret != "mf_result")
         complain("a builder, loader or generator returns mf_result")
     if (ret == "int" && !(name in intok) && name !~ /_(is|has)_/) complain("int return: not a predicate named as a question, a count or an index")
 }
