@@ -33,7 +33,7 @@ endif
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
-        $(foreach s,header api kinds warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+        $(foreach s,header api kinds history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
@@ -147,12 +147,14 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header api kinds c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
+TEST_STEPS := header api kinds history c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
 step-header: | $(RES)
 	@$(RUN_STEP) header $(RES)/header check $(MAKE) --no-print-directory header-check
+step-history: | $(RES)
+	@$(RUN_STEP) history $(RES)/history check sh tests/history_check.sh
 step-api: | $(RES)
 	@$(RUN_STEP) api $(RES)/api check sh tools/api_rules.sh
 step-warnings: | $(RES)

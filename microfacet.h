@@ -1875,8 +1875,8 @@ MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_tabl
  * the bit-level first guess of 1/sqrt(x) (relative error < 3.5%), three
  * Newton steps y (3 - x y^2) / 2 (each squares the error: a few float ulps),
  * times x. Unlike sqrtf, which may set errno, compilers vectorize it across
- * the loops' groups of 4 nodes (2x faster at -O2). Double: MF_SQRT (the same
- * steps in double were no faster there). */
+ * the loops' groups of 4 nodes. Double: MF_SQRT (the same steps gain
+ * nothing there; docs/PERFORMANCE.md). */
 MF_INLINE mf_real mf__gtr_sqrt(mf_real x)
 {
 #ifdef MF_USE_DOUBLE
@@ -2032,7 +2032,7 @@ MF_INLINE mf_ndf mf_tabulated_ndf(const mf_tabulated *t)
  * Any number of lobes. 2 <= n <= MF_TABULATED_MAX_POINTS = 4096; consecutive
  * angles at least 16 ulps apart. Build cost grows as n^2: the projected-area
  * table integrates over the control segments for 1 to 8 view angles per
- * segment (n = 91: 2 ms, 256: 9 ms, 1024: 0.07 s, 4096: about 1 s). Errors:
+ * segment (timings: docs/PERFORMANCE.md). Errors:
  * NULL or bad n (MF_ERROR_INVALID_ARGUMENT), unordered, too close or
  * non-finite angles, negative, non-finite or all-zero values
  * (MF_ERROR_INVALID_DATA), allocation
@@ -3776,7 +3776,7 @@ MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int 
  * relative error is 0.196 where the plain fit (and the published table)
  * give 0.286; disks and tubes near the lobe stay at the plain fit's
  * accuracy (max 0.079 / 0.070 against 0.074 / 0.090); same integration
- * cost. About 4.5 min to refit (double, one core). */
+ * cost (the refit's time: docs/PERFORMANCE.md). */
 #ifndef MF_NO_LTC_TABLE
 MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);
@@ -4585,8 +4585,8 @@ MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len,
  * over the slope plane 0.02 to 0.03 for Beckmann, 0.04 to 0.05 for the heavier
  * tails of GGX and Student-t, at 128^2 and 150 iterations; a random sample of
  * the same size scores 0.04). size must be a power of two in [MF_MICROSURFACE_MIN_SIZE,
- * MF_MICROSURFACE_MAX_SIZE]; memory about 100 bytes per cell; time about
- * 0.15 us per cell and iteration (1024^2 x 500 in 73 s, one core).
+ * MF_MICROSURFACE_MAX_SIZE]; memory about 100 bytes per cell; time linear
+ * in cells times iterations (docs/PERFORMANCE.md).
  * Deterministic for a seed (within one build: float and double builds draw
  * different samples). d must be centered
  * (every periodic surface has mean slope 0): a LEADR distribution with a
@@ -4606,8 +4606,8 @@ typedef unsigned long long mf_u64;
 #define MF_MICROSURFACE_MIN_SIZE 8
 #define MF_MICROSURFACE_MAX_SIZE 4096
 #define MF_MICROSURFACE_THRESHOLD MF_R(0.02)
-/* the most re-matching iterations a call accepts (the paper uses 500; at
- * 4096^2 this cap is about 5 days of one core): more is an invalid argument */
+/* the most re-matching iterations a call accepts (the paper uses 500; the
+ * cap bounds a call's time at the largest size): more is an invalid argument */
 #define MF_MICROSURFACE_MAX_ITERATIONS 100000
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
@@ -5712,11 +5712,11 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * 1D integral of the slope density (tests/test_ndf.c, 20 alphas 1e-4..1,
  * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 1.8e-6
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
- * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.7-18.4x
- * GGX's Lambda from alpha 0.3 to 1e-4 (double 5-37x: its square roots stay
- * scalar where sqrt may set errno; 4-24x with -fno-math-errno) with the rule
- * of an mf_gtr_table; building the rule (Golub-Welsch), which Lambda does at
- * each call without one, costs about 1 us (integer gamma needs no rule). The
+ * on 1 + Lambda. Cost: bench lines gtr_lambda_* (docs/PERFORMANCE.md);
+ * with the rule of an mf_gtr_table Lambda is a few GGX Lambdas, without one
+ * each call builds the rule (Golub-Welsch) first: build an mf_gtr_table for
+ * a non-integer gamma used more than a few times (integer gamma needs no
+ * rule). The
  * rule's 2 x 24 numbers do not fit in mf_ndf, and no cheaper exact form is
  * known: the per-call work of any rule whose nodes depend on gamma is
  * transcendental per node. tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8)
@@ -14821,8 +14821,7 @@ static void mf__ms_rematch(mf__ms *m, int k, mf__pcg *rng)
     size_t m2 = m->n2;
     if (k <= 0) return;
     /* g x g cells, about sixteen pool values each (fewer, larger cells visit
-     * fewer empty cells once the pool thins out: 25% faster than eight at
-     * 1024^2); lines at quantiles of Q_m */
+     * fewer empty cells once the pool thins out); lines at quantiles of Q_m */
     g = 1;
     while ((g + 1) * (g + 1) * 16 <= k && g < n / 2) ++g;
     for (j = 0; j <= g; ++j) {

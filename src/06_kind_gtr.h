@@ -122,8 +122,8 @@ MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_tabl
  * the bit-level first guess of 1/sqrt(x) (relative error < 3.5%), three
  * Newton steps y (3 - x y^2) / 2 (each squares the error: a few float ulps),
  * times x. Unlike sqrtf, which may set errno, compilers vectorize it across
- * the loops' groups of 4 nodes (2x faster at -O2). Double: MF_SQRT (the same
- * steps in double were no faster there). */
+ * the loops' groups of 4 nodes. Double: MF_SQRT (the same steps gain
+ * nothing there; docs/PERFORMANCE.md). */
 MF_INLINE mf_real mf__gtr_sqrt(mf_real x)
 {
 #ifdef MF_USE_DOUBLE
@@ -220,11 +220,11 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * 1D integral of the slope density (tests/test_ndf.c, 20 alphas 1e-4..1,
  * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 1.8e-6
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
- * on 1 + Lambda. Cost (bench lines gtr_lambda_*, float, gcc -O2): 4.7-18.4x
- * GGX's Lambda from alpha 0.3 to 1e-4 (double 5-37x: its square roots stay
- * scalar where sqrt may set errno; 4-24x with -fno-math-errno) with the rule
- * of an mf_gtr_table; building the rule (Golub-Welsch), which Lambda does at
- * each call without one, costs about 1 us (integer gamma needs no rule). The
+ * on 1 + Lambda. Cost: bench lines gtr_lambda_* (docs/PERFORMANCE.md);
+ * with the rule of an mf_gtr_table Lambda is a few GGX Lambdas, without one
+ * each call builds the rule (Golub-Welsch) first: build an mf_gtr_table for
+ * a non-integer gamma used more than a few times (integer gamma needs no
+ * rule). The
  * rule's 2 x 24 numbers do not fit in mf_ndf, and no cheaper exact form is
  * known: the per-call work of any rule whose nodes depend on gamma is
  * transcendental per node. tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8)

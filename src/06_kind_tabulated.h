@@ -54,7 +54,7 @@ MF_INLINE mf_ndf mf_tabulated_ndf(const mf_tabulated *t)
  * Any number of lobes. 2 <= n <= MF_TABULATED_MAX_POINTS = 4096; consecutive
  * angles at least 16 ulps apart. Build cost grows as n^2: the projected-area
  * table integrates over the control segments for 1 to 8 view angles per
- * segment (n = 91: 2 ms, 256: 9 ms, 1024: 0.07 s, 4096: about 1 s). Errors:
+ * segment (timings: docs/PERFORMANCE.md). Errors:
  * NULL or bad n (MF_ERROR_INVALID_ARGUMENT), unordered, too close or
  * non-finite angles, negative, non-finite or all-zero values
  * (MF_ERROR_INVALID_DATA), allocation

@@ -642,7 +642,7 @@ MFDEF mf_result mf_ltc_table_export_rgba16f(const float *data, int n_theta, int 
  * relative error is 0.196 where the plain fit (and the published table)
  * give 0.286; disks and tubes near the lobe stay at the plain fit's
  * accuracy (max 0.079 / 0.070 against 0.074 / 0.090); same integration
- * cost. About 4.5 min to refit (double, one core). */
+ * cost (the refit's time: docs/PERFORMANCE.md). */
 #ifndef MF_NO_LTC_TABLE
 MFDEF mf_ltc mf_ltc_ggx(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_ggx_albedo(mf_real cos_theta_o, mf_real alpha);

@@ -26,8 +26,8 @@
  * over the slope plane 0.02 to 0.03 for Beckmann, 0.04 to 0.05 for the heavier
  * tails of GGX and Student-t, at 128^2 and 150 iterations; a random sample of
  * the same size scores 0.04). size must be a power of two in [MF_MICROSURFACE_MIN_SIZE,
- * MF_MICROSURFACE_MAX_SIZE]; memory about 100 bytes per cell; time about
- * 0.15 us per cell and iteration (1024^2 x 500 in 73 s, one core).
+ * MF_MICROSURFACE_MAX_SIZE]; memory about 100 bytes per cell; time linear
+ * in cells times iterations (docs/PERFORMANCE.md).
  * Deterministic for a seed (within one build: float and double builds draw
  * different samples). d must be centered
  * (every periodic surface has mean slope 0): a LEADR distribution with a
@@ -47,8 +47,8 @@ typedef unsigned long long mf_u64;
 #define MF_MICROSURFACE_MIN_SIZE 8
 #define MF_MICROSURFACE_MAX_SIZE 4096
 #define MF_MICROSURFACE_THRESHOLD MF_R(0.02)
-/* the most re-matching iterations a call accepts (the paper uses 500; at
- * 4096^2 this cap is about 5 days of one core): more is an invalid argument */
+/* the most re-matching iterations a call accepts (the paper uses 500; the
+ * cap bounds a call's time at the largest size): more is an invalid argument */
 #define MF_MICROSURFACE_MAX_ITERATIONS 100000
 /* slopes drawn beyond this magnitude (heavy tails, u -> 1) are shortened to it */
 #define MF_MICROSURFACE_MAX_SLOPE MF_R(1e3)
@@ -596,8 +596,7 @@ static void mf__ms_rematch(mf__ms *m, int k, mf__pcg *rng)
     size_t m2 = m->n2;
     if (k <= 0) return;
     /* g x g cells, about sixteen pool values each (fewer, larger cells visit
-     * fewer empty cells once the pool thins out: 25% faster than eight at
-     * 1024^2); lines at quantiles of Q_m */
+     * fewer empty cells once the pool thins out); lines at quantiles of Q_m */
     g = 1;
     while ((g + 1) * (g + 1) * 16 <= k && g < n / 2) ++g;
     for (j = 0; j <= g; ++j) {
