@@ -494,7 +494,6 @@ typedef float mf_real;
 #define mf__ndf_lambda MF__SYM(mf__ndf_lambda)
 #define mf__ndf_sample_D MF__SYM(mf__ndf_sample_D)
 #define mf__ndf_sample_visible MF__SYM(mf__ndf_sample_visible)
-#define mf__ndf_mean_slope MF__SYM(mf__ndf_mean_slope)
 #define mf__ndf_prepare MF__SYM(mf__ndf_prepare)
 #define mf__beckmann_visible_slopes MF__SYM(mf__beckmann_visible_slopes)
 #define mf__gtr_sampler_init MF__SYM(mf__gtr_sampler_init)
@@ -512,7 +511,6 @@ typedef float mf_real;
 #define mf__leadr_lambda MF__SYM(mf__leadr_lambda)
 #define mf__leadr_sample_D MF__SYM(mf__leadr_sample_D)
 #define mf__leadr_sample_visible MF__SYM(mf__leadr_sample_visible)
-#define mf__leadr_mean_slope MF__SYM(mf__leadr_mean_slope)
 #define mf__student_t_sampler_init MF__SYM(mf__student_t_sampler_init)
 #define mf__student_t_D MF__SYM(mf__student_t_D)
 #define mf__student_t_lambda MF__SYM(mf__student_t_lambda)
@@ -1252,8 +1250,9 @@ MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
  *          mf__<name>_sample_visible_dir (likewise). The kinds of INL 2 are
  *          tested first.
  *     CEN  1: centred, the mean slope is 0; 0: the kind defines
- *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
- *          (the mean surface is tilted: projected area and BSDF weights use it).
+ *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my),
+ *          MF_FORCE_INLINE (the mean surface is tilted: projected area and BSDF
+ *          weights use it).
  *     ISO  visible normals by the numerical inversion of 07_numeric_vndf.h
  *          through the NDF-cos CDF of an isotropic distribution: 0 none; 1 of
  *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
@@ -1461,9 +1460,6 @@ MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
-/* The mean slope of the untransformed distribution: (0, 0) for the centred kinds
- * (CEN 1) and unknown ones. */
-MF_COLD void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
 /* d, or a copy of it with its built object (trait PREP) in p */
 MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
 
@@ -1525,6 +1521,20 @@ MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_dir_inline(const mf_ndf *d, mf_ve
     MF__NDF_KINDS(MF__NDF_TRY_VD2)
     return mf__ndf_sample_visible(d, w, u1, u2);
 }
+/* The mean slope of the untransformed distribution: (0, 0) for the centred
+ * kinds (CEN 1) and unknown ones; inline (the front ends test CEN first). */
+#define MF__NDF_MEAN_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+    MF__IFNOT##cen(MF_FORCE_INLINE void mf__##n##_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);)
+#define MF__NDF_TRY_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+    MF__IFNOT##cen(if (d->type == MF_NDF_##N) { mf__##n##_mean_slope(d, mx, my); return; })
+MF__NDF_KINDS(MF__NDF_MEAN_DECL)
+MF_FORCE_INLINE void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_MEAN)
+    *mx = *my = MF_R(0.0);
+}
+#undef MF__NDF_MEAN_DECL
+#undef MF__NDF_TRY_MEAN
 #undef MF__NDF_TRY_D2
 #undef MF__NDF_TRY_D1
 #undef MF__NDF_TRY_L2
@@ -1931,7 +1941,10 @@ MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__leadr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
-MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
+MF_FORCE_INLINE void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+{
+    *mx = d->p.leadr.mx; *my = d->p.leadr.my;
+}
 /* ======================================================================== */
 /* == 6. Distribution kinds: Student-t                                      */
 /* ======================================================================== */
@@ -5487,7 +5500,6 @@ MF_INLINE void mf__legendre(mf_real x, mf_real *p)
 #define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
 #define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
 #define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
-#define MF__NDF_CASE_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IFNOT##cen(case MF_NDF_##N: mf__##n##_mean_slope(d, mx, my); return;)
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
@@ -5516,14 +5528,6 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
 }
-MF_COLD void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_MEAN)
-    default: break;
-    }
-    *mx = *my = MF_R(0.0);
-}
 #define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
 MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
 {
@@ -5537,7 +5541,6 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
 #undef MF__NDF_CASE_LAMBDA
 #undef MF__NDF_CASE_SAMPLE_D
 #undef MF__NDF_CASE_SAMPLE_VISIBLE
-#undef MF__NDF_CASE_MEAN
 
 /* The NDF-cos CDF inversion of the kinds of ISO > 0 (07_numeric_vndf.h): tan^2
  * at mass t from the pole (q = 1 - t beyond), the mass beyond tan2, and the
@@ -6152,10 +6155,6 @@ MF_COLD const mf_ndf *mf__gtr_prepare(const mf_ndf *d, mf_ndf *copy, mf_gtr_tabl
     *copy = *d;
     copy->p.gtr.tab = t;
     return copy;
-}
-MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
-{
-    *mx = d->p.leadr.mx; *my = d->p.leadr.my;
 }
 
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
@@ -15197,7 +15196,9 @@ MFDEF mf_real mf_gonio_cell_solid_angle(const mf_gonio *g)
 MFDEF mf_result mf_gonio_model(const mf_gonio *g, const mf_ndf *d, mf_vec3 wi, int n, mf_real *out)
 {
     int c, i, j;
+    mf__ndf_prep pr;
     if (!g || !g->ring_z || !d || !out || n < 1 || n > 64 || !(wi.z > MF_R(0.0))) return MF_ERROR_INVALID_ARGUMENT;
+    d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     wi = mf_normalize(wi);
     for (c = 0; c < g->cells; ++c) {
         mf_real z0, z1, p0, p1;

@@ -42,10 +42,13 @@ static const mf_real kap[3] = { MF_R(4.83), MF_R(3.12), MF_R(2.15) };
 
 static mf_ndf make_ndf(int row, mf_real a)
 {
+    static mf_gtr_table gtr;   /* GTR at a non-integer gamma: its Lambda rule built once per roughness */
     switch (row) {
     case 0: return mf_ggx(a, a);
     case 1: return mf_beckmann(a, a);
-    case 2: return mf_gtr(a, MF_R(1.5));
+    case 2:
+        if (gtr.alpha != a) mf_gtr_table_build(&gtr, a, MF_R(1.5));
+        return mf_gtr_table_ndf(&gtr);
     default: return mf_student_t(a, a, MF_R(3.0));
     }
 }

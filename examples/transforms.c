@@ -125,12 +125,15 @@ int main(int argc, char **argv)
     const mf_vec3 right = mf_normalize(mf_cross(fwd, mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0))));
     const mf_vec3 up = mf_cross(right, fwd);
     const mf_real tan_half = MF_R(0.34);
-    const mf_ndf base = mf_gtr(ALPHA, GAMMA);
+    mf_gtr_table gtr;   /* GTR at a non-integer gamma: its Lambda rule built once */
+    mf_ndf base;
     ex_image im;
     mf_real jac_err = MF_R(0.0);
     long bad = 0;
     int px, py, s, c, err;
     if (ex_image_init(&im, W, H)) return 1;
+    mf_gtr_table_build(&gtr, ALPHA, GAMMA);
+    base = mf_gtr_table_ndf(&gtr);
 
     for (py = 0; py < H; ++py) {
         for (px = 0; px < W; ++px) {

@@ -52,8 +52,9 @@
  *          mf__<name>_sample_visible_dir (likewise). The kinds of INL 2 are
  *          tested first.
  *     CEN  1: centred, the mean slope is 0; 0: the kind defines
- *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
- *          (the mean surface is tilted: projected area and BSDF weights use it).
+ *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my),
+ *          MF_FORCE_INLINE (the mean surface is tilted: projected area and BSDF
+ *          weights use it).
  *     ISO  visible normals by the numerical inversion of 07_numeric_vndf.h
  *          through the NDF-cos CDF of an isotropic distribution: 0 none; 1 of
  *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
@@ -261,9 +262,6 @@ MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
-/* The mean slope of the untransformed distribution: (0, 0) for the centred kinds
- * (CEN 1) and unknown ones. */
-MF_COLD void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
 /* d, or a copy of it with its built object (trait PREP) in p */
 MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
 
@@ -325,6 +323,20 @@ MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_dir_inline(const mf_ndf *d, mf_ve
     MF__NDF_KINDS(MF__NDF_TRY_VD2)
     return mf__ndf_sample_visible(d, w, u1, u2);
 }
+/* The mean slope of the untransformed distribution: (0, 0) for the centred
+ * kinds (CEN 1) and unknown ones; inline (the front ends test CEN first). */
+#define MF__NDF_MEAN_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+    MF__IFNOT##cen(MF_FORCE_INLINE void mf__##n##_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);)
+#define MF__NDF_TRY_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+    MF__IFNOT##cen(if (d->type == MF_NDF_##N) { mf__##n##_mean_slope(d, mx, my); return; })
+MF__NDF_KINDS(MF__NDF_MEAN_DECL)
+MF_FORCE_INLINE void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+{
+    MF__NDF_KINDS(MF__NDF_TRY_MEAN)
+    *mx = *my = MF_R(0.0);
+}
+#undef MF__NDF_MEAN_DECL
+#undef MF__NDF_TRY_MEAN
 #undef MF__NDF_TRY_D2
 #undef MF__NDF_TRY_D1
 #undef MF__NDF_TRY_L2
@@ -340,7 +352,6 @@ MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_dir_inline(const mf_ndf *d, mf_ve
 #define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
 #define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
 #define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
-#define MF__NDF_CASE_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IFNOT##cen(case MF_NDF_##N: mf__##n##_mean_slope(d, mx, my); return;)
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
@@ -369,14 +380,6 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
 }
-MF_COLD void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_MEAN)
-    default: break;
-    }
-    *mx = *my = MF_R(0.0);
-}
 #define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
 MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
 {
@@ -390,7 +393,6 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
 #undef MF__NDF_CASE_LAMBDA
 #undef MF__NDF_CASE_SAMPLE_D
 #undef MF__NDF_CASE_SAMPLE_VISIBLE
-#undef MF__NDF_CASE_MEAN
 
 /* The NDF-cos CDF inversion of the kinds of ISO > 0 (07_numeric_vndf.h): tan^2
  * at mass t from the pole (q = 1 - t beyond), the mass beyond tan2, and the

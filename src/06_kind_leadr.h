@@ -43,12 +43,11 @@ MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__leadr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__leadr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__leadr_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
-MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);
-/* @cold */
-MF_COLD void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
+MF_FORCE_INLINE void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
 {
     *mx = d->p.leadr.mx; *my = d->p.leadr.my;
 }
+/* @cold */
 
 /* Eq. 8 and 10: Gaussian slopes with mean and covariance, / cos^4 */
 MF_COLD mf_real mf__leadr_D(const mf_ndf *d, mf_vec3 wm)

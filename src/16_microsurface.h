@@ -972,7 +972,9 @@ MFDEF mf_real mf_gonio_cell_solid_angle(const mf_gonio *g)
 MFDEF mf_result mf_gonio_model(const mf_gonio *g, const mf_ndf *d, mf_vec3 wi, int n, mf_real *out)
 {
     int c, i, j;
+    mf__ndf_prep pr;
     if (!g || !g->ring_z || !d || !out || n < 1 || n > 64 || !(wi.z > MF_R(0.0))) return MF_ERROR_INVALID_ARGUMENT;
+    d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
     wi = mf_normalize(wi);
     for (c = 0; c < g->cells; ++c) {
         mf_real z0, z1, p0, p1;
