@@ -7,11 +7,13 @@ OPT     ?= -O2
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wdouble-promotion
 TWARN   := -Wall -Wextra -Wshadow
 BUILD   := build
-TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/test_sampling.c \
-            tests/test_brdf.c tests/test_ltmd.c tests/test_ltc.c tests/test_ltc_shapes.c tests/test_leadr.c \
-            tests/test_tabulated.c tests/test_ibm.c tests/test_microsurface.c \
-            tests/test_materials.c tests/test_dielectric.c tests/test_energy.c tests/test_robust.c tests/test_samplers.c tests/test_float.c tests/test_tu2.c \
-            tests/test_fuzzfound.c tests/test_lobes.c
+# the test modules: tests/modules.h is the one list (MFT_QUICK ones also run in
+# make check and in make test's C++ builds; test_sampling, test_brdf and
+# test_fuzzfound hold checks and the counting allocator the others share)
+TEST_MODULES := $(shell sed -n 's/^MFT_[A-Z]*(\(test_[a-z0-9_]*\)).*/\1/p' tests/modules.h)
+QUICK_MODULES := $(shell sed -n 's/^MFT_QUICK(\(test_[a-z0-9_]*\)).*/\1/p' tests/modules.h)
+TEST_SRC := tests/main.c tests/quad.c $(TEST_MODULES:%=tests/%.c)
+QUICK_SRC := tests/quad.c $(sort $(QUICK_MODULES:%=tests/%.c) tests/test_sampling.c tests/test_brdf.c tests/test_fuzzfound.c)
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 # OpenEXR is optional (apt-get install libopenexr-dev): found through
@@ -30,9 +32,9 @@ else
 EXR_STEPS  := exr_skip
 endif
 
-.PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
-.PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
-        header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
+.PHONY: fuzz fuzz-build check-all api kinds history warnings config fastmath package readme include_cost
+.PHONY: all test check test-c test-cpp asan bench bench-inline demo install clean cuda-check cuda-run \
+        header header-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
         $(foreach s,header api kinds history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
@@ -45,9 +47,6 @@ header:
 	@sh tools/amalgamate.sh --readme > README.md.tmp && mv README.md.tmp README.md
 	@mkdir -p docs && sh tools/amalgamate.sh --api > docs/API.md.tmp && mv docs/API.md.tmp docs/API.md
 	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/ (and the API index: README.md, docs/API.md)"
-# make test runs this: module opt-outs, the allocator pair, precision mixing
-config-check: | $(BUILD)
-	@sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
 # make test runs this: the committed header and README's API index must be
 # what the generator makes
 header-check:
@@ -94,15 +93,28 @@ else
 Q := @
 endif
 
+# ---- what the build depends on besides sources: the compilers, flags and
+# ---- OpenEXR's presence; a change rewrites build/config.stamp, and every
+# ---- object, test and example rebuilds
+CONFIG_LINE := $(CC) | $(CXX) | $(OPT) | $(HAVE_EXR) $(EXR_DEFS) $(EXR_LIBS)
+CONFIG := $(BUILD)/config.stamp
+$(shell mkdir -p $(BUILD) && { [ "$$(cat $(CONFIG) 2>/dev/null)" = '$(CONFIG_LINE)' ] || echo '$(CONFIG_LINE)' > $(CONFIG); })
+
 # ---- test binaries: {C, C++} x {float, double}, one object per test source so
-# ---- that make -j compiles in parallel and rebuilds only what changed;
-# ---- ref_other.c is the same math in the other precision (always C), for the
-# ---- float-vs-double comparison
+# ---- that make -j compiles in parallel and rebuilds only what changed.
+# build/test_<cfg> holds every module; build/quick_<cfg> the MFT_QUICK ones
+# (its main.c built with MFT_QUICK_ONLY). ref_other.c is the same math in the
+# other precision (always C), for the float-vs-double comparison. c_float is
+# built as users build (hot paths always_inline); the others with plain
+# `static inline` hot paths, which the compiler inlines by its own measure:
+# the same IEEE results (tests/test_tu2.c compares inline and cold paths bit
+# for bit) in a third of the compile time.
 TEST_CFGS := c_double c_float cpp_double cpp_float
-CMD_c_double   := $(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float
+PLAIN_INLINE := '-DMF_FORCE_INLINE=static inline'
+CMD_c_double   := $(CC) -std=c99 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMF_USE_DOUBLE -DMFT_OTHER=float
 CMD_c_float    := $(CC) -std=c99 $(OPT) $(TWARN) -DMFT_OTHER=double
-CMD_cpp_double := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float
-CMD_cpp_float  := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) -DMFT_OTHER=double
+CMD_cpp_double := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMF_USE_DOUBLE -DMFT_OTHER=float
+CMD_cpp_float  := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMFT_OTHER=double
 LINK_c_double := $(CC)
 LINK_c_float := $(CC)
 LINK_cpp_double := $(CXX)
@@ -111,66 +123,98 @@ REF_c_double := ref_float
 REF_c_float := ref_double
 REF_cpp_double := ref_float
 REF_cpp_float := ref_double
-TEST_HDRS := microfacet.h tests/mf_test.h tests/quad.h tests/ref_other.h
+TEST_HDRS := microfacet.h tests/mf_test.h tests/modules.h tests/quad.h tests/ref_other.h $(CONFIG)
 
-$(BUILD)/ref_float.o: tests/ref_other.c microfacet.h | $(BUILD)
+$(BUILD)/ref_float.o: tests/ref_other.c microfacet.h $(CONFIG)
 	@echo "  CC      $@"
-	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) -I. -c $< -o $@
-$(BUILD)/ref_double.o: tests/ref_other.c microfacet.h | $(BUILD)
+	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) $(PLAIN_INLINE) -I. -c $< -o $@
+$(BUILD)/ref_double.o: tests/ref_other.c microfacet.h $(CONFIG)
 	@echo "  CC      $@"
-	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -I. -c $< -o $@
+	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMF_USE_DOUBLE -I. -c $< -o $@
 
-define TEST_BUILD
+# one template per configuration: its objects, the full and the quick binary,
+# and the make test step that runs it
+define TEST_CFG
 $(BUILD)/$(1)/%.o: tests/%.c $(TEST_HDRS)
 	@mkdir -p $(BUILD)/$(1)
 	@echo "  CC      $$@"
 	$(Q)$(CMD_$(1)) -I. -Itests -c $$< -o $$@
+$(BUILD)/$(1)/main_quick.o: tests/main.c $(TEST_HDRS)
+	@mkdir -p $(BUILD)/$(1)
+	@echo "  CC      $$@"
+	$(Q)$(CMD_$(1)) -DMFT_QUICK_ONLY -I. -Itests -c $$< -o $$@
 $(BUILD)/test_$(1): $(patsubst tests/%.c,$(BUILD)/$(1)/%.o,$(TEST_SRC)) $(BUILD)/$(REF_$(1)).o
 	@echo "  LINK    $$@"
 	$(Q)$(LINK_$(1)) $$^ -o $$@ -lm
+$(BUILD)/quick_$(1): $(BUILD)/$(1)/main_quick.o $(patsubst tests/%.c,$(BUILD)/$(1)/%.o,$(QUICK_SRC)) $(BUILD)/$(REF_$(1)).o
+	@echo "  LINK    $$@"
+	$(Q)$(LINK_$(1)) $$^ -o $$@ -lm
+step-$(1): $(BUILD)/$(RUN_$(1))_$(1) | $(RES)
+	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(ARGS_$(1))
 endef
-$(foreach c,$(TEST_CFGS),$(eval $(call TEST_BUILD,$(c))))
-
-TEST_BINS := $(TEST_CFGS:%=$(BUILD)/test_%)
+# make test: the C builds run every module, the C++ builds the quick ones
+RUN_c_double := test
+RUN_c_float := test
+RUN_cpp_double := quick
+RUN_cpp_float := quick
+ARGS_c_double = $(FULL)
+ARGS_c_float = $(FULL)
+ARGS_cpp_double = $(if $(filter test,$(RUN_cpp_double)),$(FULL),--quick)
+ARGS_cpp_float = $(if $(filter test,$(RUN_cpp_float)),$(FULL),--quick)
+$(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 
 # ---- make test: every step streams its output with [step] in front of each
-# ---- line; steps run in parallel; the last line is the total
-# ---- "N passed, N failed" and the exit status is non-zero on any failure.
-# The C builds run every module; the C++ builds compile every test source and
-# run a representative subset (make test-cpp runs them whole).
+# ---- line; steps run in parallel (include_cost first, alone: it times the
+# ---- compiler); the last line is the total "N passed, N failed" and the exit
+# ---- status is non-zero on any failure. make check-all adds the long
+# ---- campaigns: every module at full size (--full) in all four builds, the
+# ---- fuzz smoke run and the sanitizers.
 RES := $(BUILD)/results
-CPP_MODULES ?= test_core test_leadr test_tabulated test_ibm test_robust test_float test_tu2
-QUICK_MODULES := test_core test_leadr test_tabulated test_ibm test_robust test_float test_tu2
-MODULES_c_double :=
-MODULES_c_float :=
-MODULES_cpp_double = $(CPP_MODULES)
-MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header api kinds history c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
+CHECK_STEPS := header api kinds history warnings config fastmath package readme
+TEST_STEPS := include_cost $(CHECK_STEPS) c_double c_float examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
-step-header: | $(RES)
-	@$(RUN_STEP) header $(RES)/header check $(MAKE) --no-print-directory header-check
-step-history: | $(RES)
-	@$(RUN_STEP) history $(RES)/history check sh tests/history_check.sh
-step-api: | $(RES)
-	@$(RUN_STEP) api $(RES)/api check sh tools/api_rules.sh
-step-warnings: | $(RES)
-	@$(RUN_STEP) warnings $(RES)/warnings check sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
-step-examples: | $(RES)
+# the checks of make test, each one script or target (name: command)
+CHECK_header := $(MAKE) --no-print-directory header-check
+CHECK_api := sh tools/api_rules.sh
+# no module but 05_ndf.h and the kinds' own tests a kind by name (traits instead)
+CHECK_kinds := sh tests/kind_names_check.sh
+CHECK_history := sh tests/history_check.sh
+# the header alone compiles cleanly as C99/C11 and C++98..20, float and
+# double, gcc and clang (when present), with -Werror
+CHECK_warnings := sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
+# module opt-outs, the allocator pair, precision mixing, determinism
+CHECK_config := sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
+# the NaN/Inf robustness subset built with -ffast-math, float and double
+CHECK_fastmath := sh tests/fastmath_check.sh "$(CC)" "$(TWARN)" $(BUILD)
+# the CMake package and pkg-config, when cmake is present
+CHECK_package := sh tests/package_check.sh "$(CC)" $(BUILD)
+CHECK_readme := sh tests/readme_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
+CHECK_include_cost := sh tests/include_cost.sh "$(CC)" $(BUILD)
+define CHECK_STEP
+step-$(1): | $(RES)
+	@$$(RUN_STEP) $(1) $(RES)/$(1) check $$(CHECK_$(1))
+endef
+$(foreach c,$(CHECK_STEPS) include_cost,$(eval $(call CHECK_STEP,$(c))))
+# each check alone: make warnings, make config, ... (make header-check: the header)
+CHECK_ALONE := api kinds history warnings config fastmath package readme include_cost
+$(CHECK_ALONE): %: step-%
+	@$(SUM) $*
+step-examples: $(CONFIG) | $(RES)
 	@$(RUN_STEP) examples $(RES)/examples tests sh tests/examples_check.sh "$(CC)" "$(WARN)" $(BUILD) "$(EXR_DEFS)" "$(EXR_LIBS)"
 # OpenEXR inputs read into the IBM and LEADR builders (tests/exr_check.c),
 # float and double; one line saying it was skipped when OpenEXR is absent
 ifeq ($(HAVE_EXR),yes)
-$(BUILD)/exr_check_float: tests/exr_check.c tools/exr_io.h tools/ibm_exr.h microfacet.h | $(BUILD)
+$(BUILD)/exr_check_float: tests/exr_check.c tools/exr_io.h tools/ibm_exr.h microfacet.h $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 -O2 $(TWARN) -I. $(EXR_CFLAGS) $< -o $@ $(EXR_LIBS) -lm
-$(BUILD)/exr_check_double: tests/exr_check.c tools/exr_io.h tools/ibm_exr.h microfacet.h | $(BUILD)
+$(BUILD)/exr_check_double: tests/exr_check.c tools/exr_io.h tools/ibm_exr.h microfacet.h $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 -O2 $(TWARN) -DMF_USE_DOUBLE -I. $(EXR_CFLAGS) $< -o $@ $(EXR_LIBS) -lm
-$(BUILD)/ibm_from_exr: tools/ibm_from_exr.c tools/exr_io.h tools/ibm_exr.h microfacet.h | $(BUILD)
+$(BUILD)/ibm_from_exr: tools/ibm_from_exr.c tools/exr_io.h tools/ibm_exr.h microfacet.h $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 -O2 $(WARN) -I. $(EXR_CFLAGS) $< -o $@ $(EXR_LIBS) -lm
 step-exr_float: $(BUILD)/exr_check_float | $(RES)
@@ -188,58 +232,38 @@ step-exr_skip: | $(RES)
 tools:
 	@echo "tools: EXR skipped: OpenEXR not found (apt-get install libopenexr-dev), or EXR=no; nothing to build"
 endif
-step-fastmath: | $(RES)
-	@$(RUN_STEP) fastmath $(RES)/fastmath check $(MAKE) --no-print-directory fastmath-check
 step-fuzz: | $(RES)
 	@$(RUN_STEP) fuzz $(RES)/fuzz tests sh tests/fuzz/smoke.sh "$(MAKE)" $(BUILD)/fuzz $(FUZZ_SMOKE) $(FUZZ_TARGETS)
-step-readme: | $(RES)
-	@$(RUN_STEP) readme $(RES)/readme check sh tests/readme_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
-step-package: | $(RES)
-	@$(RUN_STEP) package $(RES)/package check sh tests/package_check.sh "$(CC)" $(BUILD)
-step-config: | $(RES)
-	@$(RUN_STEP) config $(RES)/config check sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
-step-include_cost: | $(RES)
-	@$(RUN_STEP) include_cost $(RES)/include_cost check sh tests/include_cost.sh "$(CC)" $(BUILD)
-# no module but 05_ndf.h and the kinds' own tests a kind by name (traits instead)
-step-kinds: | $(RES)
-	@$(RUN_STEP) kinds $(RES)/kinds check sh tests/kind_names_check.sh
-# (phony targets take no pattern rules: one explicit rule per configuration)
-define TEST_RUN
-step-$(1): $(BUILD)/test_$(1) | $(RES)
-	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(MODULES_$(1))
-endef
-$(foreach c,$(TEST_CFGS),$(eval $(call TEST_RUN,$(c))))
-step-quick: $(BUILD)/test_c_float | $(RES)
-	@$(RUN_STEP) quick $(RES)/quick tests ./$< $(QUICK_MODULES)
+step-quick: $(BUILD)/quick_c_float | $(RES)
+	@$(RUN_STEP) quick $(RES)/quick tests ./$< --quick
 
-test: $(TEST_STEPS:%=step-%)
+# include_cost runs first and alone (a timing); then the rest in parallel
+test:
+	@$(MAKE) --no-print-directory step-include_cost
+	@$(MAKE) --no-print-directory $(filter-out step-include_cost,$(TEST_STEPS:%=step-%))
 	@$(SUM) $(TEST_STEPS)
-# smoke test, under 30 s: the header is current, one build, the quick modules
+# smoke test, under 30 s on a fresh clone: the header is current, the quick modules
 check: step-header step-quick
 	@$(SUM) header quick
+# make test, then every module at full size in all four builds, the fuzz
+# smoke run and the sanitizers
+check-all:
+	@$(MAKE) --no-print-directory step-include_cost
+	@$(MAKE) --no-print-directory FULL=--full RUN_cpp_double=test RUN_cpp_float=test \
+	  $(filter-out step-include_cost,$(TEST_STEPS:%=step-%)) step-fuzz step-asan_double step-asan_float
+	@$(SUM) $(TEST_STEPS) fuzz asan_double asan_float
 test-c: step-c_double step-c_float
 	@$(SUM) c_double c_float
-test-cpp: CPP_MODULES :=
-test-cpp: step-cpp_double step-cpp_float
+test-cpp:
+	@$(MAKE) --no-print-directory RUN_cpp_double=test RUN_cpp_float=test step-cpp_double step-cpp_float
 	@$(SUM) cpp_double cpp_float
-test-double: CPP_MODULES :=
-test-double: step-c_double step-cpp_double
-	@$(SUM) c_double cpp_double
-test-float: CPP_MODULES :=
-test-float: step-c_float step-cpp_float
-	@$(SUM) c_float cpp_float
-
-# warnings: the header alone must compile cleanly as C99/C11 and C++98..20,
-# float and double, gcc and clang (when present), with -Werror.
-warnings: | $(BUILD)
-	@sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
 
 # ASan + UBSan, double and float
 SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g
-$(BUILD)/asan_ref_f.o: tests/ref_other.c microfacet.h | $(BUILD)
+$(BUILD)/asan_ref_f.o: tests/ref_other.c microfacet.h $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 -O1 $(SAN) $(TWARN) -I. -c $< -o $@
-$(BUILD)/asan_ref_d.o: tests/ref_other.c microfacet.h | $(BUILD)
+$(BUILD)/asan_ref_d.o: tests/ref_other.c microfacet.h $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 -O1 $(SAN) $(TWARN) -DMF_USE_DOUBLE -I. -c $< -o $@
 $(BUILD)/asan_double: $(TEST_SRC) $(TEST_HDRS) $(BUILD)/asan_ref_f.o
@@ -254,12 +278,6 @@ step-asan_float: $(BUILD)/asan_float | $(RES)
 	@$(RUN_STEP) asan_float $(RES)/asan_float tests ./$<
 asan: step-asan_double step-asan_float
 	@$(SUM) asan_double asan_float
-
-# make test runs this: the NaN/Inf robustness subset built with -ffast-math
-# (tests/fastmath_check.c), float and double
-fastmath-check: | $(BUILD)
-	@$(CC) -std=c99 -O2 -ffast-math $(TWARN) -I. tests/fastmath_check.c -o $(BUILD)/fastmath_f -lm && ./$(BUILD)/fastmath_f >/dev/null
-	@$(CC) -std=c99 -O2 -ffast-math $(TWARN) -DMF_USE_DOUBLE -I. tests/fastmath_check.c -o $(BUILD)/fastmath_d -lm && ./$(BUILD)/fastmath_d >/dev/null
 
 # ---- libFuzzer targets (tests/fuzz/): clang with -fsanitize=fuzzer,address,
 # ---- undefined. `make fuzz` runs each for FUZZ_TIME seconds in float and in
@@ -290,10 +308,6 @@ ifeq ($(HAVE_CLANG),yes)
 else
 	@echo "fuzz: clang not found, skipped"
 endif
-# make test runs this: each target for FUZZ_SMOKE seconds (float), or one
-# line saying why it was skipped
-fuzz-smoke:
-	@sh tests/fuzz/smoke.sh "$(MAKE)" $(BUILD)/fuzz $(FUZZ_SMOKE) $(FUZZ_TARGETS)
 
 bench: | $(BUILD)
 	$(CC) -std=c99 -O2 $(WARN) -DMF_BENCH_FLAGS="\"-std=c99 -O2\"" -I. bench/bench.c -o $(BUILD)/bench -lm
@@ -361,11 +375,6 @@ install:
 	sed -e 's|@MF_PC_VERSION@|$(VERSION)|' -e 's|@MF_PC_INCLUDEDIR@|include|' cmake/microfacet.pc.in > $(DESTDIR)$(PREFIX)/share/pkgconfig/microfacet.pc
 	chmod 644 $(DESTDIR)$(PREFIX)/share/pkgconfig/microfacet.pc
 
-# packaging check (make test runs it when cmake is present): CMake package
-# through find_package, add_subdirectory and FetchContent; pkg-config after
-# cmake --install and after make install
-package-check: | $(BUILD)
-	@sh tests/package_check.sh "$(CC)" $(BUILD)
 
 clean:
 	rm -rf $(BUILD) out

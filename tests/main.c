@@ -143,27 +143,30 @@ mf_ndf mft_make(const mft_case *c)
 
 void mft_tu_values_main(double *out) { mft_tu_values(out); }
 
-/* Modules named on the command line run (all when none is named); -v prints
- * every check. Each module says when it starts, so its information lines sit
- * under its own name, and ends with its count and CPU time. */
-static int mft_argc;
+/* Modules named on the command line run (all when none is named; --quick:
+ * the MFT_QUICK ones of tests/modules.h); -v prints every check; --full runs
+ * the long campaigns at full size (mft_full). Each module says when it
+ * starts, so its information lines sit under its own name, and ends with its
+ * count and CPU time. */
+int mft_full = 0;
+static int mft_argc, mft_quick;
 static char **mft_argv;
-static int mft_selected(const char *name)
+static int mft_selected(const char *name, int quick)
 {
     int i, any = 0;
     for (i = 1; i < mft_argc; ++i) {
-        if (!strcmp(mft_argv[i], "-v")) continue;
+        if (mft_argv[i][0] == '-') continue;
         any = 1;
         if (!strcmp(mft_argv[i], name)) return 1;
     }
-    return !any;
+    return !any && (quick || !mft_quick);
 }
 
-static void mft_run(const char *name, void (*fn)(void))
+static void mft_run(const char *name, void (*fn)(void), int quick)
 {
     int f0 = mft_failed, p0 = mft_passed;
     clock_t t0;
-    if (!mft_selected(name)) return;
+    if (!mft_selected(name, quick)) return;
     printf("  %s ...\n", name);
     t0 = clock();
     fn();
@@ -176,37 +179,27 @@ int main(int argc, char **argv)
     int i;
     mft_argc = argc;
     mft_argv = argv;
-    for (i = 1; i < argc; ++i)
+    for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "-v")) mft_verbose = 1;
+        else if (!strcmp(argv[i], "--quick")) mft_quick = 1;
+        else if (!strcmp(argv[i], "--full")) mft_full = 1;
+        else if (argv[i][0] == '-') { fprintf(stderr, "usage: %s [-v] [--quick] [--full] [test_module...]\n", argv[0]); return 2; }
+    }
     setvbuf(stdout, NULL, _IOLBF, 0); /* stream progress through a pipe */
-    printf("microfacet.h tests, mf_real = %s, %s\n", MFT_REAL_NAME,
+    printf("microfacet.h tests, mf_real = %s, %s%s\n", MFT_REAL_NAME,
 #ifdef __cplusplus
-           "C++"
+           "C++",
 #else
-           "C"
+           "C",
 #endif
-    );
-#define MFT_RUN(name) mft_run(#name, name)
-    MFT_RUN(test_core);
-    MFT_RUN(test_ndf);
-    MFT_RUN(test_sampling);
-    MFT_RUN(test_brdf);
-    MFT_RUN(test_ltmd);
-    MFT_RUN(test_ltc);
-    MFT_RUN(test_ltc_shapes);
-    MFT_RUN(test_leadr);
-    MFT_RUN(test_tabulated);
-    MFT_RUN(test_ibm);
-    MFT_RUN(test_microsurface);
-    MFT_RUN(test_materials);
-    MFT_RUN(test_dielectric);
-    MFT_RUN(test_energy);
-    MFT_RUN(test_material_lobes);
-    MFT_RUN(test_robust);
-    MFT_RUN(test_samplers);
-    MFT_RUN(test_fuzzfound);
-    MFT_RUN(test_float);
-    MFT_RUN(test_tu2);
+           mft_full ? ", full size" : "");
+#ifdef MFT_QUICK_ONLY   /* build/quick_*: only the quick modules are linked */
+#define MFT_MODULE(name)
+#else
+#define MFT_MODULE(name) mft_run(#name, name, 0);
+#endif
+#define MFT_QUICK(name) mft_run(#name, name, 1);
+#include "modules.h"
     printf("%d passed, %d failed\n", mft_passed, mft_failed);
     return mft_failed ? 1 : 0;
 }

@@ -77,27 +77,19 @@ void mft_sampler_check(const char *name, const mf_ndf *d, mf_vec3 v, int visible
                        unsigned long long seed);
 void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long long seed, int spline);
 
-/* Test modules. */
-void test_core(void);
-void test_ndf(void);
-void test_sampling(void);
-void test_brdf(void);
-void test_robust(void);
-void test_samplers(void);
-void test_float(void);
-void test_tu2(void);
-void test_ltmd(void);
-void test_ltc(void);
-void test_ltc_shapes(void);
-void test_leadr(void);
-void test_tabulated(void);
-void test_ibm(void);
-void test_microsurface(void);
-void test_materials(void);
-void test_dielectric(void);
-void test_energy(void);
-void test_fuzzfound(void);
-void test_material_lobes(void);
+/* Test modules (tests/modules.h). */
+#define MFT_MODULE(name) void name(void);
+#define MFT_QUICK(name) void name(void);
+#include "modules.h"
+#undef MFT_MODULE
+#undef MFT_QUICK
+
+/* 1 under the runner's --full (make check-all): the long campaigns at their
+ * full size (more samples, denser grids); 0 in make test */
+extern int mft_full;
+/* a sample count: n under --full, else n / 4 (at least 2000); chi-square
+ * statistics and sigma-based bounds are computed from the count used */
+#define MFT_N(n) (mft_full ? (n) : ((n) / 4 > 2000 ? (n) / 4 : (n) < 2000 ? (n) : 2000))
 
 /* The same inline and cold-path computations, compiled in each unit that
  * calls them: test_tu2 compares its own with those of tests/main.c. The

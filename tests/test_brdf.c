@@ -51,6 +51,7 @@ void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long
     double tot = 0.0, sumw = 0.0, sumw2 = 0.0, z, alb, mc, se, norm = 1.0, med;
     char msg[200];
     alb_ctx ac;
+    n = MFT_N(n);
     /* cell scale from pilot samples */
     mft_seed(&r, seed + 77);
     for (i = 0; i < 2001; ++i) {

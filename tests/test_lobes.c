@@ -773,7 +773,7 @@ static void test_lobes_robust(void)
     MFT_CHECK(bad == 0, "lobes: every new function finite and in range on special values (0, -0, tiny, huge, inf, NaN, negative)");
 }
 
-void test_material_lobes(void)
+void test_lobes(void)
 {
     test_f82();
     test_eon_eval();

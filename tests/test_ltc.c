@@ -193,7 +193,7 @@ static void test_ggx_table(mft_rng *r)
                 p[1] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)size)));
                 p[2] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)size)));
                 p[3] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)-size)));
-                mc = brdf_polygon_mc(&d, wo, p, 4, 200000, r, &se);
+                mc = brdf_polygon_mc(&d, wo, p, 4, MFT_N(200000), r, &se);
                 ltc = mf_ltc_ggx_albedo((mf_real)ct, (mf_real)alphas[a]) * mf_ltc_integrate(&l, p, 4, 1);
                 if (mc < 0.02) continue;   /* relative error of a negligible integral says nothing */
                 rel = fabs(ltc - mc) / mc;
@@ -394,6 +394,7 @@ static void test_off_node(void)
     for (half = 0; half < 2; ++half)
         for (ri = 0; ri < 5; ++ri)
             for (ci = 0; ci < 4; ++ci) {
+                if (!mft_full && ((ri & 1) || (ci & 1))) continue;   /* make test: 6 of the 20 cells */
                 double v = (rows[ri] + 0.5 * half) / 63.0, tt = (cols[ci] + 0.5 * half) / 63.0, al = v * v, ct = 1 - tt * tt;
                 double st = sqrt(1 - ct * ct);
                 mf_ltc_fit_result fr;
@@ -434,7 +435,7 @@ static void test_off_node(void)
            " (blending the last-entry-1 form: mean %.4f max %.4f)\n", sum[0] / cnt[0], mx[0], cnt[0], sum[1] / cnt[1], mx[1],
            sum_old / cnt[1], mx_old);
     snprintf(msg, sizeof msg, "off-node LTC lookup vs direct fit: mean %.4f (on-node %.4f), max %.4f", sum[1] / cnt[1], sum[0] / cnt[0], mx[1]);
-    MFT_CHECK(cnt[1] > 60 && sum[1] / cnt[1] < 0.01 && mx[1] < 0.06, msg);
+    MFT_CHECK(cnt[1] > (mft_full ? 60 : 18) && sum[1] / cnt[1] < 0.01 && mx[1] < 0.06, msg);
 }
 
 /* The edge integral (theta / sin theta) (a x b) of unit vectors a, b in long
@@ -1197,7 +1198,7 @@ static void test_beckmann_table(mft_rng *r)
                     p[1] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)-size), mf_scale(v, (mf_real)size)));
                     p[2] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)size)));
                     p[3] = mf_add(mf_scale(cdir, 2), mf_add(mf_scale(u, (mf_real)size), mf_scale(v, (mf_real)-size)));
-                    mc = brdf_polygon_mc(&d, wo, p, 4, 200000, r, &se);
+                    mc = brdf_polygon_mc(&d, wo, p, 4, MFT_N(200000), r, &se);
                     lt = mf_ltc_beckmann_albedo((mf_real)ct, (mf_real)alphas[a]) * mf_ltc_integrate(&l, p, 4, 1);
                     if (mc < 0.02) continue;
                     rel = fabs(lt - mc) / mc;

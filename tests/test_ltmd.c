@@ -83,7 +83,7 @@ static void test_random_transforms(void)
             snprintf(name, sizeof name, "%s a=%.3f,%.3f g=%.3f M=[%.2f %.2f; %.2f %.2f]", bases[b].name, c.ax, c.ay, c.gamma,
                      (double)M.m00, (double)M.m01, (double)M.m10, (double)M.m11);
             MFT_CHECK(d.transformed == 1, "random M accepted");
-            integrals(name, &d, spline, ns);
+            if (mft_full || (b + k) % 2 == 0) integrals(name, &d, spline, ns);   /* make test: half of them */
             mft_sampler_check(name, &d, mf_vec3_make(0, 0, 1), 0, slow ? 30000 : 100000, 0, 900 + 10 * b + k);
             mft_sampler_check(name, &d, mft_dir(0.4 + 0.5 * k, 1.0 + k), 1, slow ? 30000 : 100000, spline, 950 + 10 * b + k);
             if (k == 0) mft_brdf_check(name, d, mft_dir(0.7, 2.0), slow ? 20000 : 60000, 990 + b, spline);

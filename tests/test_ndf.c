@@ -326,6 +326,7 @@ static void test_visible_dense(void)
             mf_ndf d = ig < 5 ? mft_gtr(ag[ia], gg[ig]) : mf_student_t((mf_real)ag[ia], (mf_real)ag[ia], (mf_real)gs[ig - 5]);
             for (it = 0; it < 3; ++it) {
                 double t = th[it] * 3.14159265358979323846 / 180.0, got;
+                if (!mft_full && (ia + ig + it) % 3) continue;   /* make test: a third of the grid, every row and column */
                 mf_vec3 v = mf_vec3_make((mf_real)sin(t), 0, (mf_real)cos(t));
                 got = mft_visible_integral(&d, v, 1);
                 if (fabs(got - 1.0) > worst) worst = fabs(got - 1.0);

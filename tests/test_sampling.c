@@ -57,6 +57,7 @@ void mft_sampler_check(const char *name, const mf_ndf *d, mf_vec3 v, int visible
     double z, tot = 0.0, med;
     char msg[200];
     c.d = d; c.v = v; c.visible = visible;
+    n = MFT_N(n);
     memset(obs, 0, sizeof obs);
     /* cell scale: the median normalized slope of 2001 pilot samples (another seed) */
     mft_seed(&r, seed + 999);
