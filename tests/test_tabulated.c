@@ -200,7 +200,7 @@ static void test_eq10(void)
 }
 
 /* isotropic multi-lobe, and an anisotropic ring with zero at the pole (weights 1, 1) */
-static void test_lobes(void)
+static void tab_lobes(void)
 {
     enum { N = 64 };
     double th[N], dx[N], dy[N];
@@ -420,7 +420,7 @@ static void test_rebase(void)
 void test_tabulated(void)
 {
     test_eq10();
-    test_lobes();
+    tab_lobes();
     test_copies();
     test_aniso_copy();
     test_transformed();
