@@ -71,8 +71,12 @@ void test_samplers(void)
                     mfs_check(&tb, s, wo, 0, mf_brdf_pdf(d, wo, s.wi), (double)mf_brdf(d, wo, s.wi) * s.wi.z);
                     s = mf_brdf_sample_bounded(d, wo, u1, u2);
                     mfs_check(&tbb, s, wo, 0, mf_brdf_pdf_bounded(d, wo, s.wi), (double)mf_brdf(d, wo, s.wi) * s.wi.z);
-                    s = mf_brdf_ms_sample(d, wo, u1, u2);
-                    if (k % 4 == 0) mfs_check(&tms, s, wo, 0, mf_brdf_ms_pdf(d, wo, s.wi), (double)mf_brdf_ms(d, wo, s.wi) * s.wi.z);
+                    /* the compensation lobe integrates the albedo of a kind without a
+                     * table at each call (~10 ms): every fourth of the first 17 cases */
+                    if (k % 4 == 0 && k < 17) {
+                        s = mf_brdf_ms_sample(d, wo, u1, u2);
+                        mfs_check(&tms, s, wo, 0, mf_brdf_ms_pdf(d, wo, s.wi), (double)mf_brdf_ms(d, wo, s.wi) * s.wi.z);
+                    }
                     /* the distribution samplers: unit normals where D is positive; a
                      * visible normal at u2 = 1 lies on the view's visibility horizon
                      * (wo.m = 0 up to rounding), which the lobe samplers reject */
