@@ -55,14 +55,16 @@ MF_INLINE mf_real mf__charlie_D_k(mf_real k, mf_vec3 wm)
 }
 /* Normals of density D(m) m.z: the D-cos mass of sin theta_m <= S is
  * S^{k+2}, so sin^2 theta_m = u1^{2/(k+2)}, phi = 2 pi u2. u1 is clamped to
- * [1e-30, 1 - eps/2]: at u1 = 0 the pole, where D = 0, is replaced by a
- * normal 1e-30 of the mass away (D > 0 there in float too); m.z = sqrt(-expm1(
- * 2 log(u1)/(k+2))) > 0 at u1 = 1. NaN u gives the pole. */
+ * [MF__CHARLIE_T_MIN, 1 - eps/2]: at u1 = 0 the pole, where D = 0, is
+ * replaced by a normal 1e-12 of the mass away, where D, and the BRDF's pdf
+ * at grazing views, stay normal floats; m.z = sqrt(-expm1(2 log(u1)/(k+2)))
+ * > 0 at u1 = 1. NaN u gives the pole. */
+#define MF__CHARLIE_T_MIN MF_R(1e-12)
 MF_INLINE mf_vec3 mf__charlie_sample_D_k(mf_real k, mf_real u1, mf_real u2)
 {
     mf_real umax = MF_R(1.0) - MF_R(0.5) * MF_EPS, lg, s2, z, s, cp, sp;
     if (!(u1 == u1) || !(u2 == u2)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
-    u1 = mf_clamp(u1, MF_R(1e-30), umax);
+    u1 = mf_clamp(u1, MF__CHARLIE_T_MIN, umax);
     u2 = mf_clamp(u2, MF_R(0.0), MF_R(1.0));
     lg = MF_R(2.0) * MF_LOG(u1) / (k + MF_R(2.0));   /* log sin^2 */
     s2 = MF_EXP(lg);
@@ -102,13 +104,14 @@ MF_COLD mf_vec3 mf__charlie_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u
 
 /* tan^2(theta) at D-cos mass t from the pole (q = 1 - t beyond): sin^2 =
  * t^{2/(k+2)}, its log from whichever of t and q is the smaller, cos^2 =
- * -expm1 of it. t is floored at 1e-30, as in mf__charlie_sample_D_k, so the
- * pole (D = 0) is never returned. MF_BIG at q = 0. */
+ * -expm1 of it. t is floored at MF__CHARLIE_T_MIN, as in
+ * mf__charlie_sample_D_k, so the pole (D = 0) is never returned. MF_BIG at
+ * q = 0. */
 MF_COLD mf_real mf__charlie_tan2(const mf_ndf *d, mf_real t, mf_real q)
 {
     mf_real lg, c2;
     if (!(q > MF_R(0.0))) return MF_BIG;
-    lg = MF_R(2.0) / (d->p.charlie.k + MF_R(2.0)) * (q < MF_R(0.5) ? MF_LOG1P(-q) : MF_LOG(mf_max(t, MF_R(1e-30))));
+    lg = MF_R(2.0) / (d->p.charlie.k + MF_R(2.0)) * (q < MF_R(0.5) ? MF_LOG1P(-q) : MF_LOG(mf_max(t, MF__CHARLIE_T_MIN)));
     c2 = -MF_EXPM1(lg);
     if (!(c2 > MF_R(0.0))) return MF_BIG;
     return mf_min(MF_EXP(lg) / c2, MF_BIG);

@@ -54,7 +54,7 @@ MF_INLINE mf_real mf_charlie_lambda_fit(mf_real alpha, mf_vec3 w)
 
 /* A normal m with density D(m) m.z (the NDF sampler): sin theta_m =
  * u1^{1/(k+2)}, phi = 2 pi u2 (mf__charlie_sample_D_k). u in [0, 1]; m.z > 0
- * and D(m) > 0 always (u1 = 0 is read as 1e-30). NaN gives the pole. */
+ * and D(m) > 0 always (u1 below 1e-12 is read as 1e-12). NaN gives the pole. */
 MF_INLINE mf_vec3 mf_charlie_sample_D(mf_real alpha, mf_real u1, mf_real u2)
 {
     if (!(alpha == alpha)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(1.0));
