@@ -1299,9 +1299,11 @@ static double b_tf_rgb_metal(const mf_ndf *d)
 static double b_charlie_fit(const mf_ndf *d) { (void)d; LOOP(mf_charlie_lambda_fit(MF_R(0.05) + MF_R(0.95) * g_u1[i], g_wo[i])); }
 static double b_charlie_exact(const mf_ndf *d) { (void)d; LOOP(mf_charlie_lambda(MF_R(0.05) + MF_R(0.95) * g_u1[i], g_wo[i])); }
 static double b_charlie_D(const mf_ndf *d) { (void)d; LOOP(mf_charlie_D(MF_R(0.05) + MF_R(0.95) * g_u1[i], g_wm[i])); }
+static double b_charlie_fit03(const mf_ndf *d) { (void)d; LOOP(mf_charlie_lambda_fit(MF_R(0.3), g_wo[i])); }
 static void bench_lobes(void)
 {
     double tb, to;
+    mf_ndf ch = mf_charlie(MF_R(0.3)), gg = mf_ggx(MF_R(0.3), MF_R(0.3));
     run_pair(b_lambert, b_eon, NULL, &tb, &to);
     printf("bench eon_brdf %.2f lambert=%.2f ratio=%.2f\n", to, tb, to / tb);
     run_pair(b_cos_sample, b_eon_sample, NULL, &tb, &to);
@@ -1319,4 +1321,9 @@ static void bench_lobes(void)
     run_pair(b_charlie_fit, b_charlie_exact, NULL, &tb, &to);
     printf("bench charlie_lambda_exact %.1f published_fit=%.1f ratio=%.2f\n", to, tb, to / tb);
     printf("bench charlie_D %.2f\n", run(b_charlie_D, NULL));
+    /* the kind through the generic front ends, alpha 0.3 */
+    run_pair2(b_charlie_fit03, &ch, b_lambda, &ch, &tb, &to);
+    printf("bench charlie_kind_lambda %.1f published_fit=%.1f ratio=%.2f\n", to, tb, to / tb);
+    run_pair2(b_vndf, &gg, b_vndf, &ch, &tb, &to);
+    printf("bench charlie_kind_sample_visible %.1f ggx=%.1f ratio=%.2f\n", to, tb, to / tb);
 }

@@ -1,12 +1,15 @@
-/* Demonstrates the four distributions of microfacet.h on a grid of silver
- * spheres: rows GGX, Beckmann, GTR (gamma 1.5), Student-t (gamma 3); columns
- * roughness alpha 0.05, 0.15, 0.3, 0.5, 0.8. Each sphere is lit by one
+/* Demonstrates the analytic distributions of microfacet.h on a grid of silver
+ * spheres: rows GGX, Beckmann, GTR (gamma 1.5), Student-t (gamma 3) and the
+ * Charlie sheen (Estevez & Kulla 2017, its exact Smith masking; alpha is its
+ * own parameter, the exponent 1/alpha of sin theta_m: the light gathers at
+ * grazing angles, the rim of the sphere); columns alpha 0.05, 0.15, 0.3,
+ * 0.5, 0.8. Each sphere is lit by one
  * directional light (mf_brdf) and a procedural sky sampled by visible-normal
  * importance sampling (mf_brdf_sample's record: direction and weight), with exact
  * conductor Fresnel per RGB channel. 32 jittered samples per pixel; the sky
- * gets 32 of them on the GGX and Beckmann rows but only 8 on the GTR and
- * Student-t rows, whose exact VNDF samplers are far slower (about 10 s in all
- * on one core). Writes base.png (tone mapped, each sphere labelled with its
+ * gets 32 of them on the GGX and Beckmann rows but only 8 on the GTR,
+ * Student-t and Charlie rows, whose exact VNDF samplers (Charlie's a
+ * numerical inversion) are far slower (about 13 s in all on one core). Writes base.png (tone mapped, each sphere labelled with its
  * distribution and alpha), base.pfm (linear) and, built with OpenEXR,
  * base.exr, and prints the count of non-finite samples (expected 0; the exit
  * status is 1 otherwise).
@@ -24,16 +27,17 @@
 #include <string.h>
 
 #define COLS 5
-#define ROWS 4
+#define ROWS 5
 #define CELL 128
 #define W (COLS * CELL)
 #define H (ROWS * CELL)
 #define SPP 32   /* pixel samples: position jitter and the directional light */
 
-static const char *const row_names[ROWS] = { "GGX", "Beckmann", "GTR(1.5)", "Student-t(3)" };
+static const char *const row_names[ROWS] = { "GGX", "Beckmann", "GTR(1.5)", "Student-t(3)", "Charlie" };
 /* sky samples per pixel and row: exact GTR / Student-t visible-normal sampling
- * costs about 150-300x a GGX sample, so those rows take fewer (stratified) */
-static const int sky_spp[ROWS] = { 32, 32, 8, 8 };
+ * costs about 150-300x a GGX sample, Charlie's numerical one about 200x, so
+ * those rows take fewer (stratified) */
+static const int sky_spp[ROWS] = { 32, 32, 8, 8, 8 };
 static const mf_real alphas[COLS] = { MF_R(0.05), MF_R(0.15), MF_R(0.3), MF_R(0.5), MF_R(0.8) };
 /* silver, complex IOR at roughly 650, 550, 450 nm */
 static const mf_real eta[3] = { MF_R(0.155), MF_R(0.117), MF_R(0.138) };
@@ -49,7 +53,8 @@ static mf_ndf make_ndf(int row, mf_real a)
     case 2:
         if (gtr.alpha != a) mf_gtr_table_build(&gtr, a, MF_R(1.5));
         return mf_gtr_table_ndf(&gtr);
-    default: return mf_student_t(a, a, MF_R(3.0));
+    case 3: return mf_student_t(a, a, MF_R(3.0));
+    default: return mf_charlie(a);
     }
 }
 
@@ -147,8 +152,8 @@ int main(int argc, char **argv)
     err = ex_write(&im, base);
     ex_image_free(&im);
 
-    printf("rows: %s, %s, %s, %s; columns: alpha = 0.05 0.15 0.3 0.5 0.8\n",
-           row_names[0], row_names[1], row_names[2], row_names[3]);
+    printf("rows: %s, %s, %s, %s, %s; columns: alpha = 0.05 0.15 0.3 0.5 0.8\n",
+           row_names[0], row_names[1], row_names[2], row_names[3], row_names[4]);
     printf("non-finite samples: %ld\n", bad);
     return bad != 0 || err;
 }

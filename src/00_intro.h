@@ -34,9 +34,11 @@
  *         Newton steps and Gauss-Legendre nodes for the numerical samplers)
  *   == 5. Distributions: the mf_ndf value type, its kinds and the one
  *         dispatch point
- *   == 6. Distribution kinds, one module each: Beckmann, GGX, GTR, LEADR
- *         (non-centered Beckmann), Student-t, tabulated (piecewise-linear)
- *   == 7. Numerical visible-normal sampling of the heavy-tailed kinds
+ *   == 6. Distribution kinds, one module each: Beckmann, Charlie (sheen),
+ *         GGX, GTR, LEADR (non-centered Beckmann), Student-t, tabulated
+ *         (piecewise-linear)
+ *   == 7. Numerical visible-normal sampling of the heavy-tailed kinds and
+ *         of Charlie
  *   == 8. Linearly transformed microsurfaces: any 2x2 transform of any
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 9. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible

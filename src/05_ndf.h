@@ -17,13 +17,16 @@
  *            of lobes. Lambda by the split integration of Eq. 13-14 (precomputed
  *            at build time, see mf__tab_lambda), NDF sampling by Eq. 15-18, visible
  *            normals by an exact inversion (mf__tab_sample_visible).
+ *   Charlie  (Estevez & Kulla 2017, Eq. 2): the sheen distribution
+ *            (2 + 1/alpha) sin^{1/alpha}(theta) / (2 pi), isotropic (06_kind_charlie.h).
  * mf_ndf is a small value type; build it once per shading point and pass it by
  * const pointer. Every generic operation (mf_D, mf_lambda, mf_G1, mf_G2,
  * mf_D_visible, mf_sample_D, mf_sample_visible, mf_brdf...) accepts every kind. */
 
 /* The kinds of mf_ndf, in the order of their mf_ndf_type values
  * (MF_NDF_BECKMANN = 0, MF_NDF_GGX, MF_NDF_GTR, MF_NDF_STUDENT_T, MF_NDF_LEADR
- * = the non-centered Beckmann of LEADR moments, MF_NDF_TABULATED). Each line
+ * = the non-centered Beckmann of LEADR moments, MF_NDF_TABULATED,
+ * MF_NDF_CHARLIE = the sheen of Estevez & Kulla 2017). Each line
  * X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) is one module
  * src/06_kind_<name>.h, which defines
  *   - its parameter struct mf_ndf_<name> (part @decl), stored in mf_ndf.p.<name>,
@@ -83,7 +86,8 @@
     X(GTR,       gtr,       0, 1, 1, 1, 0, 0, 1, 1) \
     X(STUDENT_T, student_t, 0, 1, 2, 1, 0, 0, 1, 0) \
     X(LEADR,     leadr,     0, 0, 0, 0, 0, 0, 0, 0) \
-    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0, 0)
+    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0, 0) \
+    X(CHARLIE,   charlie,   0, 1, 1, 1, 0, 0, 1, 0)
 
 #define MF__NDF_ENUM(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF_NDF_##N,
 typedef enum mf_ndf_type { MF__NDF_KINDS(MF__NDF_ENUM) MF_NDF_KIND_COUNT } mf_ndf_type;

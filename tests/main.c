@@ -116,6 +116,8 @@ const mft_case mft_cases[] = {
     { "student 0.4x0.1 g3", MF_NDF_STUDENT_T, 0.4, 0.1, 3.0 },
     { "student 0.8 g10", MF_NDF_STUDENT_T, 0.8, 0.8, 10.0 },
     { "student 0.2 g2", MF_NDF_STUDENT_T, 0.2, 0.2, 2.0 },
+    { "charlie 0.3", MF_NDF_CHARLIE, 0.3, 0.3, 0 },
+    { "charlie 0.02", MF_NDF_CHARLIE, 0.02, 0.02, 0 },
 };
 const int mft_ncases = (int)(sizeof(mft_cases) / sizeof(mft_cases[0]));
 
@@ -137,6 +139,7 @@ mf_ndf mft_make(const mft_case *c)
     case MF_NDF_BECKMANN: return mf_beckmann((mf_real)c->ax, (mf_real)c->ay);
     case MF_NDF_GGX: return mf_ggx((mf_real)c->ax, (mf_real)c->ay);
     case MF_NDF_GTR: return mft_gtr(c->ax, c->gamma);
+    case MF_NDF_CHARLIE: return mf_charlie((mf_real)c->ax);
     default: return mf_student_t((mf_real)c->ax, (mf_real)c->ay, (mf_real)c->gamma);
     }
 }

@@ -13,6 +13,7 @@ static mf_ndf make(int kind, double ax, double ay, double g)
     case MF_NDF_BECKMANN: return mf_beckmann((mf_real)ax, (mf_real)ay);
     case MF_NDF_GGX: return mf_ggx((mf_real)ax, (mf_real)ay);
     case MF_NDF_GTR: return mf_gtr((mf_real)ax, (mf_real)g);
+    case MF_NDF_CHARLIE: return mf_charlie((mf_real)ax);
     default: return mf_student_t((mf_real)ax, (mf_real)ay, (mf_real)g);
     }
 }

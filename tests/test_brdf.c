@@ -60,6 +60,11 @@ void mft_brdf_check(const char *name, mf_ndf d, mf_vec3 wo, int n, unsigned long
         rr[i] = wi.z > 0 ? mft_norm_radius(&d, h) : 1e30;
     }
     med = mft_median(rr, 2001);
+    if (med >= 1e29) {   /* most views of a sheen (Charlie) reflect below the horizon: the valid ones' median */
+        int nv = 0;
+        while (nv < 2001 && rr[nv] < 1e29) ++nv;   /* rr is sorted */
+        med = nv > 0 ? rr[nv / 2] : 1.0;
+    }
     mft_cells_init(&cells, &d, med, NA, NP);
     memset(obs, 0, sizeof obs);
     mft_seed(&r, seed);
@@ -127,7 +132,7 @@ void test_brdf(void)
     const char *only = getenv("MFT_CASE");
     for (i = 0; i < mft_ncases; ++i) {
         const mft_case *cs = &mft_cases[i];
-        int slow = cs->kind == MF_NDF_GTR || cs->kind == MF_NDF_STUDENT_T;
+        int slow = cs->kind == MF_NDF_GTR || cs->kind == MF_NDF_STUDENT_T || cs->kind == MF_NDF_CHARLIE;
         int spline = cs->kind == MF_NDF_GTR && fabs(cs->gamma - floor(cs->gamma + 0.5)) > 1e-9 && cs->ax < 1.0;
         if (only && !strstr(cs->name, only)) continue;
         for (j = 0; j < 3; ++j)

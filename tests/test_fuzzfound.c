@@ -632,10 +632,10 @@ static void solvers_adversarial(void)
  * at the view's opposite azimuth, where p + v cancels in float. */
 static void lost_samples(void)
 {
-    mf_ndf ds[14];
-    const char *names[14] = { "ggx", "beckmann", "gtr 0.0015 g4", "gtr 0.3 g0.5", "gtr 0.02 g1.5", "gtr 0.2 g3.7",
+    mf_ndf ds[15];
+    const char *names[15] = { "ggx", "beckmann", "gtr 0.0015 g4", "gtr 0.3 g0.5", "gtr 0.02 g1.5", "gtr 0.2 g3.7",
                               "student 0.3 g1.6", "student 0.5 g1.55", "student 0.05 g3", "tabulated", "leadr",
-                              "transformed ggx", "stretched beckmann", "transformed gtr" };
+                              "transformed ggx", "stretched beckmann", "transformed gtr", "charlie 0.01" };
     const double views[] = { 0.0, 0.5, 1.2, 1.5, 1.5707, 1.57079 };
     mf_tabulated tab;
     mf_leadr lm;
@@ -657,8 +657,9 @@ static void lost_samples(void)
     ds[11] = mf_transformed(mf_ggx(MF_R(0.2), MF_R(0.2)), mf_mat2_make(MF_R(1.5), MF_R(0.3), MF_R(-0.2), MF_R(0.8)));
     ds[12] = mf_stretched(mf_beckmann(MF_R(0.05), MF_R(0.05)), MF_R(0.7));
     ds[13] = mf_transformed(mf_gtr(MF_R(0.1), MF_R(1.5)), mf_mat2_make(MF_R(1.2), MF_R(0.0), MF_R(0.4), MF_R(0.9)));
+    ds[14] = mf_charlie(MF_R(0.01));
     MFT_CHECK(have_tab, "lost samples: tabulated distribution built");
-    for (k = 0; k < 14; ++k) {
+    for (k = 0; k < 15; ++k) {
         int lost_k = 0, zero_k = 0;
         for (iv = 0; iv < 6; ++iv) {
             mf_vec3 v = mft_dir(views[iv], 0.4);
@@ -692,7 +693,7 @@ static void lost_samples(void)
         lost += lost_k; zero_pdf += zero_k;
     }
     MFT_CHECK(ggx_edge <= 12, "GGX cap edge u2 = 1 - 2^-24 opposite the view: at most one u1 per view");
-    printf("    u sweep, 14 kinds x 6 views x 129 x 33 u: %d lost, %d zero-density visible samples, %d at the GGX cap edge (of %d)\n",
+    printf("    u sweep, 15 kinds x 6 views x 129 x 33 u: %d lost, %d zero-density visible samples, %d at the GGX cap edge (of %d)\n",
            lost, zero_pdf, ggx_edge, n);
     if (have_tab) mf_tabulated_release(&tab);
 }

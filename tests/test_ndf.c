@@ -436,14 +436,15 @@ static void test_gtr_envelope(void)
  * unknown to MF__NDF_KINDS is no distribution: 0, and no sample (05_ndf.h). */
 static void test_dispatch(void)
 {
-    mf_ndf k[6], u;
+    mf_ndf k[7], u;
     int i, j, bad = 0;
     k[0] = mf_beckmann(MF_R(0.3), MF_R(0.2)); k[1] = mf_ggx(MF_R(0.3), MF_R(0.2));
     k[2] = mf_gtr(MF_R(0.3), MF_R(2.5)); k[3] = mf_student_t(MF_R(0.3), MF_R(0.2), MF_R(3.0));
     k[4] = mf_leadr_ndf(mf_leadr_with_roughness(mf_leadr_from_slope(MF_R(0.1), MF_R(-0.05)), MF_R(0.3), MF_R(0.2)));
-    k[5] = mf_ggx(MF_R(0.5), MF_R(0.5));
-    for (i = 0; i < 5; ++i) {
-        MFT_CHECK(k[i].type == i && mf__ndf_known(k[i].type), "kinds in the order of MF__NDF_KINDS");
+    k[5] = mf_ggx(MF_R(0.5), MF_R(0.5)); k[6] = mf_charlie(MF_R(0.3));
+    for (i = 0; i < 7; ++i) {
+        if (i == 5) continue;   /* (tabulated: test_tabulated) */
+        MFT_CHECK(k[i].type == (i == 6 ? MF_NDF_CHARLIE : i) && mf__ndf_known(k[i].type), "kinds in the order of MF__NDF_KINDS");
         for (j = 0; j < 16; ++j) {
             mf_vec3 w = mft_dir(1.5 * j / 15.0, 0.4 * j);
             mf_real u1 = (mf_real)(0.05 + 0.06 * j), u2 = (mf_real)(0.9 - 0.05 * j);
@@ -459,6 +460,9 @@ static void test_dispatch(void)
               mf__ndf_iso(MF_NDF_BECKMANN) == 0 && mf__ndf_ltc(MF_NDF_GTR) && !mf__ndf_ltc(MF_NDF_TABULATED) &&
               mf__ndf_energy_table(MF_NDF_GGX) == 1 && mf__ndf_energy_table(MF_NDF_BECKMANN) == 2 &&
               !mf__ndf_axes(MF_NDF_LEADR), "the traits of MF__NDF_KINDS");
+    MFT_CHECK(mf__ndf_iso(MF_NDF_CHARLIE) == 1 && !mf__ndf_tr(MF_NDF_CHARLIE) && !mf__ndf_tilted(MF_NDF_CHARLIE) &&
+              mf__ndf_ltc(MF_NDF_CHARLIE) && mf__ndf_axes(MF_NDF_CHARLIE) && mf__ndf_energy_table(MF_NDF_CHARLIE) == 0,
+              "the traits of Charlie: numerical visible normals of its own D, LTC family, isotropic");
     for (i = 0; i < 3; ++i) {
         mf_vec3 w = mft_dir(0.6, 0.2), m = mft_dir(0.3, 1.0), s, sv, z;
         mf_real mx = 1, my = 1;

@@ -3,7 +3,8 @@
  * below-horizon directions, u = 0 and u -> 1. Every output must be finite;
  * D, Lambda, pdf >= 0; G1, G2 in [0, 1]; samples unit vectors or the zero
  * vector. One check per distribution kind and function family (kind 5:
- * tabulated copies of GGX and anisotropic Beckmann with those parameters). */
+ * tabulated copies of GGX and anisotropic Beckmann with those parameters;
+ * kind 6: Charlie, and Charlie stretched by an alpha of the list). */
 #include "mf_test.h"
 
 static int unit_or_zero(mf_vec3 m)
@@ -34,7 +35,7 @@ void test_robust(void)
     dirs[9] = mft_dir(2.0, 0.5);
     dirs[10] = mft_dir(1.5707964, 0.3);           /* just below */
     dirs[11] = mft_dir(0.05, 4.0);
-    for (kind = 0; kind < 6; ++kind) {
+    for (kind = 0; kind < 7; ++kind) {
         int bad_eval = 0, bad_smith = 0, bad_sample = 0, bad_brdf = 0;
         for (ia = 0; ia < 11; ++ia)
             for (ig = 0; ig < (kind >= 2 && kind <= 3 ? 13 : 1); ++ig) {
@@ -48,9 +49,10 @@ void test_robust(void)
                     mf_tabulated_from_ndf(&tb, &gb, 24);
                 }
                 d = kind == 0 ? mf_beckmann(a, b) : kind == 1 ? mf_ggx(a, b) : kind == 2 ? mf_gtr(a, g)
-                  : kind == 3 ? mf_student_t(a, b, g) : kind == 4 ? mf_leadr_ndf(lm) : mf_tabulated_ndf(&ta);
+                  : kind == 3 ? mf_student_t(a, b, g) : kind == 4 ? mf_leadr_ndf(lm) : kind == 5 ? mf_tabulated_ndf(&ta) : mf_charlie(a);
                 d0 = kind == 0 ? mf_beckmann(a, 0) : kind == 1 ? mf_ggx(0, a) : kind == 2 ? mf_gtr(0, g)
-                   : kind == 3 ? mf_student_t(a, 0, g) : kind == 4 ? mf_leadr_ndf(l0) : mf_tabulated_ndf(&tb);
+                   : kind == 3 ? mf_student_t(a, 0, g) : kind == 4 ? mf_leadr_ndf(l0) : kind == 5 ? mf_tabulated_ndf(&tb)
+                   : mf_stretched(mf_charlie(b), a);
                 for (l = 0; l < 2; ++l) {
                     const mf_ndf *dd = l ? &d0 : &d;
                     for (i = 0; i < 12; ++i) {

@@ -74,8 +74,8 @@ void test_samplers(void)
                     /* the compensation lobe at a quarter of the kinds; a kind without a
                      * built-in albedo table integrates its albedo at each call (two views) */
                     if (k % 4 == 0 && (d->type == MF_NDF_GGX || d->type == MF_NDF_BECKMANN || v < 2 || mft_full)) {
-                    s = mf_brdf_ms_sample(d, wo, u1, u2);
-                    mfs_check(&tms, s, wo, 0, mf_brdf_ms_pdf(d, wo, s.wi), (double)mf_brdf_ms(d, wo, s.wi) * s.wi.z);
+                        s = mf_brdf_ms_sample(d, wo, u1, u2);
+                        mfs_check(&tms, s, wo, 0, mf_brdf_ms_pdf(d, wo, s.wi), (double)mf_brdf_ms(d, wo, s.wi) * s.wi.z);
                     }
                     /* the distribution samplers: unit normals where D is positive; a
                      * visible normal at u2 = 1 lies on the view's visibility horizon

@@ -303,7 +303,7 @@ void test_sampling(void)
         const mft_case *cs = &mft_cases[i];
         if (only && !strstr(cs->name, only)) continue;
         mf_ndf d = mft_make(cs);
-        int slow = cs->kind == MF_NDF_GTR || cs->kind == MF_NDF_STUDENT_T;
+        int slow = cs->kind == MF_NDF_GTR || cs->kind == MF_NDF_STUDENT_T || cs->kind == MF_NDF_CHARLIE;
         int n = slow ? 40000 : 200000;
         mft_sampler_check(cs->name, &d, mf_vec3_make(0, 0, 1), 0, 200000, 0, 11 + i);
         for (j = 0; j < 4; ++j)

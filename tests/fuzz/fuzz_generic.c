@@ -50,7 +50,7 @@ static mf_ndf fz_ndf(fz_in *in)
         }
         d = fz_tab_ok > 0 ? mf_tabulated_ndf(&fz_tab) : mf_ggx(a, b);
         break;
-    default: d = mf_beckmann(a, a); break;
+    case 7: d = mf_charlie(a); break;
     }
     /* transforms: stretch, general matrix, or composed */
     k = fz_u8(in);
