@@ -93,26 +93,19 @@ else
 Q := @
 endif
 
-# ---- what the build depends on besides sources: the compilers, flags and
-# ---- OpenEXR's presence; a change rewrites build/config.stamp, and every
-# ---- object, test and example rebuilds
-CONFIG_LINE := $(CC) | $(CXX) | $(OPT) | $(HAVE_EXR) $(EXR_DEFS) $(EXR_LIBS)
-CONFIG := $(BUILD)/config.stamp
-$(shell mkdir -p $(BUILD) && { [ "$$(cat $(CONFIG) 2>/dev/null)" = '$(CONFIG_LINE)' ] || echo '$(CONFIG_LINE)' > $(CONFIG); })
-
 # ---- test binaries: {C, C++} x {float, double}, one object per test source so
 # ---- that make -j compiles in parallel and rebuilds only what changed.
 # build/test_<cfg> holds every module; build/quick_<cfg> the MFT_QUICK ones
 # (its main.c built with MFT_QUICK_ONLY). ref_other.c is the same math in the
-# other precision (always C), for the float-vs-double comparison. c_float is
+# other precision (always C), for the float-vs-double comparison. c_double is
 # built as users build (hot paths always_inline); the others with plain
 # `static inline` hot paths, which the compiler inlines by its own measure:
 # the same IEEE results (tests/test_tu2.c compares inline and cold paths bit
 # for bit) in a third of the compile time.
 TEST_CFGS := c_double c_float cpp_double cpp_float
 PLAIN_INLINE := '-DMF_FORCE_INLINE=static inline'
-CMD_c_double   := $(CC) -std=c99 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMF_USE_DOUBLE -DMFT_OTHER=float
-CMD_c_float    := $(CC) -std=c99 $(OPT) $(TWARN) -DMFT_OTHER=double
+CMD_c_double   := $(CC) -std=c99 $(OPT) $(TWARN) -DMF_USE_DOUBLE -DMFT_OTHER=float
+CMD_c_float    := $(CC) -std=c99 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMFT_OTHER=double
 CMD_cpp_double := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMF_USE_DOUBLE -DMFT_OTHER=float
 CMD_cpp_float  := $(CXX) -x c++ -std=c++11 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMFT_OTHER=double
 LINK_c_double := $(CC)
@@ -123,6 +116,15 @@ REF_c_double := ref_float
 REF_c_float := ref_double
 REF_cpp_double := ref_float
 REF_cpp_float := ref_double
+# ---- what the build depends on besides sources: the compilers, their flags
+# ---- and OpenEXR's presence; a change rewrites build/config.stamp, and every
+# ---- object, test and example rebuilds
+CONFIG_LINE := $(CC) | $(CXX) | $(OPT) | $(HAVE_EXR) $(EXR_DEFS) $(EXR_LIBS) | $(foreach c,$(TEST_CFGS),$(CMD_$(c)) |)
+CONFIG := $(BUILD)/config.stamp
+$(shell mkdir -p $(BUILD))
+$(file >$(CONFIG).new,$(CONFIG_LINE))
+$(shell cmp -s $(CONFIG).new $(CONFIG) || mv $(CONFIG).new $(CONFIG); rm -f $(CONFIG).new)
+
 TEST_HDRS := microfacet.h tests/mf_test.h tests/modules.h tests/quad.h tests/ref_other.h $(CONFIG)
 
 $(BUILD)/ref_float.o: tests/ref_other.c microfacet.h $(CONFIG)
@@ -323,7 +325,7 @@ bench-inline: | $(BUILD)
 # ---- changed and rerun only when rebuilt; its output is printed with
 # ---- [example] in front, and the list of images written ends the target.
 EXAMPLES := $(basename $(notdir $(wildcard examples/*.c)))
-$(BUILD)/ex_%: examples/%.c examples/example_common.h microfacet.h $(EXR_HDR) | $(BUILD)
+$(BUILD)/ex_%: examples/%.c examples/example_common.h microfacet.h $(EXR_HDR) $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 -O2 $(WARN) $(EXR_DEFS) -I. $< -o $@ $(EXR_LIBS) -lm
 out/%.png: $(BUILD)/ex_%
