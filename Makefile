@@ -33,7 +33,7 @@ endif
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
-        $(foreach s,header api kinds history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+        $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
@@ -45,6 +45,7 @@ header:
 	@sh tools/amalgamate.sh --readme > README.md.tmp && mv README.md.tmp README.md
 	@mkdir -p docs && sh tools/amalgamate.sh --api > docs/API.md.tmp && mv docs/API.md.tmp docs/API.md
 	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/ (and the API index: README.md, docs/API.md)"
+	@sh tools/prefix_check.sh "$(CC)"
 # make test runs this: module opt-outs, the allocator pair, precision mixing
 config-check: | $(BUILD)
 	@sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
@@ -147,7 +148,7 @@ MODULES_cpp_double = $(CPP_MODULES)
 MODULES_cpp_float = $(CPP_MODULES)
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-TEST_STEPS := header api kinds history c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
+TEST_STEPS := header api kinds prefix history c_double c_float fuzz warnings config include_cost fastmath package readme examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -203,6 +204,9 @@ step-include_cost: | $(RES)
 # no module but 05_ndf.h and the kinds' own tests a kind by name (traits instead)
 step-kinds: | $(RES)
 	@$(RUN_STEP) kinds $(RES)/kinds check sh tests/kind_names_check.sh
+# each module compiles after the ones before it, none uses a later one
+step-prefix: | $(RES)
+	@$(RUN_STEP) prefix $(RES)/prefix check sh tools/prefix_check.sh "$(CC)"
 # (phony targets take no pattern rules: one explicit rule per configuration)
 define TEST_RUN
 step-$(1): $(BUILD)/test_$(1) | $(RES)

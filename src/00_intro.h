@@ -32,14 +32,17 @@
  *   == 3. Fresnel
  *   == 4. Special functions (erf inverse, incomplete beta, stable helpers,
  *         Newton steps and Gauss-Legendre nodes for the numerical samplers)
- *   == 5. Distributions: the mf_ndf value type, its kinds and the one
- *         dispatch point
+ *   == 5. Distributions: the mf_ndf value type, its kinds (MF__NDF_KINDS
+ *         and their traits) and the inline front ends of the one dispatch
+ *   == 5b. Numerical visible-normal sampling of the heavy-tailed kinds
+ *          (through the trait ISO)
  *   == 6. Distribution kinds, one module each: Beckmann, GGX, GTR, LEADR
  *         (non-centered Beckmann), Student-t, tabulated (piecewise-linear)
- *   == 7. Numerical visible-normal sampling of the heavy-tailed kinds
+ *   == 7. The kinds' dispatch: the cold switches of the generic operations
  *   == 8. Linearly transformed microsurfaces: any 2x2 transform of any
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 9. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
+ *   == 9b. Tabulating any distribution (mf_tabulated_from_ndf)
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
  *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
  *         sampling; Fresnel averages

@@ -11,7 +11,7 @@
  * a microsecond). NDF sampling by the closed-form inverse CDF
  * (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
  * mixture of GGX lobes (mf__gtr_sample_visible), falling back on the exact
- * numerical inversion of 07_numeric_vndf.h. Everything but the constructors
+ * numerical inversion of 05_numeric_vndf.h. Everything but the constructors
  * is cold. */
 /* @decl */
 /* most nodes of the Lambda mixture rule (the rule takes fewer at larger
@@ -107,7 +107,7 @@ MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h; ISO 1). */
+ * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h; ISO 1). */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
@@ -497,7 +497,7 @@ MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19])
  * Normals facing away from w (float rounding at the cap's edge) are drawn
  * again. The first proposal uses (u1, u2), further draws the stream of
  * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
- * numerical inversion of 07_numeric_vndf.h answers. */
+ * numerical inversion of 05_numeric_vndf.h answers. */
 MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real q = MF_R(1.0) - u1;
