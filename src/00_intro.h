@@ -31,7 +31,10 @@
  *   == 2. Vectors, 2x2 matrices and frames
  *   == 3. Fresnel
  *   == 4. Special functions (erf inverse, incomplete beta, stable helpers,
- *         Newton steps and Gauss-Legendre nodes for the numerical samplers)
+ *         Newton steps for the numerical samplers)
+ *   == 4b. Utilities: the rejection samplers' random stream, quadrature rules
+ *          (Gauss-Legendre, Gauss-Jacobi); PCG32, sorting, selection and an
+ *          FFT for the microsurface generator and the gonioreflectometer
  *   == 5. Distributions: the mf_ndf value type, its kinds (MF__NDF_KINDS
  *         and their traits) and the inline front ends of the one dispatch
  *   == 5b. Numerical visible-normal sampling of the heavy-tailed kinds
