@@ -5,9 +5,9 @@
  *   06_kind_leadr.h 06_kind_student_t.h 06_kind_tabulated.h 07_ndf_dispatch.h
  *   08_transform.h 09_smith.h 09_tabulated_from_ndf.h 10_sampling.h 11_brdf.h
  *   11_dielectric.h 12_leadr.h 13_ltc.h 13_ltc_shapes.h 14_ltc_table.h
- *   14_ltc_table_beckmann.h 15_ibm.h 16_microsurface.h 17_energy_table.h
- *   18_energy.h 19_fresnel_f82_thin_film.h 20_eon.h 21_sheen.h 97_deprecated.h
- *   99_outro.h
+ *   14_ltc_table_beckmann.h 15_ibm.h 16_microsurface.h 16_microsurface_gonio.h
+ *   17_energy_table.h 18_energy.h 19_fresnel_f82_thin_film.h 20_eon.h
+ *   21_sheen.h 97_deprecated.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
  * Version 0.4.0.  MIT licensed (see the end of this file).
@@ -69,8 +69,8 @@
  *   == 14. The built-in GGX LTC table (generated data)
  *   == 15. Inverse Bin Map: compact integral histograms of normal maps,
  *          footprint queries, the filtered glint BRDF, sampling and pdf
- *   == 16. Microsurface generation from any distribution and a virtual
- *          gonioreflectometer
+ *   == 16. Microsurface generation from any distribution
+ *   == 16b. A virtual gonioreflectometer
  *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
  *   == 18. Energy compensation (Kulla & Conty 2017): albedo, the multiple-
  *          scattering lobe and its sampling, Turquin scaling, table builders
@@ -4621,16 +4621,17 @@ MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len,
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
 /* ======================================================================== */
-/* == 16. Microsurface generation and a virtual gonioreflectometer          */
+/* == 16. Microsurface generation                                           */
 /* ======================================================================== */
 /* Ribardiere, Bringier, Meneveaux, Simonot 2019, "Microfacet BSDFs Generated
  * from NDFs and Explicit Microgeometry", Sec. 2 and 4: periodic height fields
  * whose normals follow any mf_ndf (Algorithm 1: slopes Q_m sampled from D,
  * Schwarz error Eq. 19, least-squares integration Eq. 20-21 with the discrete
- * derivatives of Eq. 22, re-matching), and a virtual gonioreflectometer that
- * traces them. Everything is in the implementation section (no inline part). */
+ * derivatives of Eq. 22, re-matching); the virtual gonioreflectometer that
+ * traces them is 16_microsurface_gonio.h. Everything is in the implementation
+ * section (no inline part). */
 
-/* ---- Microsurface generation and the virtual gonioreflectometer ---- */
+/* ---- Microsurface generation ---- */
 /* mf_microsurface_generate (Ribardiere et al. 2019, Algorithm 1): a periodic
  * size x size height field whose normals follow d. Row-major (x along a row,
  * y down the rows), heights in units of the grid spacing, mean 0: the central
@@ -4703,10 +4704,15 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, int itera
  * generator; non-finite input: MF_ERROR_INVALID_DATA. */
 MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size, mf_real *heights);
 
+#endif /* MF_NO_MICROSURFACE */
+#ifndef MF_NO_MICROSURFACE
+/* ======================================================================== */
+/* == 16b. A virtual gonioreflectometer                                     */
+/* ======================================================================== */
 /* The virtual gonioreflectometer (Ribardiere et al. 2019, Sec. 2): a
  * collimated beam from wi lights a periodic height field (heights in units of
- * the grid spacing, as above) traced as a triangle mesh with mirror or
- * Lambertian facets; every bounce is followed and the light leaving the
+ * the grid spacing, as mf_microsurface_generate makes them) traced as a
+ * triangle mesh with mirror or Lambertian facets; every bounce is followed and the light leaving the
  * surface is recorded in a hemispherical sensor of equal-solid-angle cells
  * (rings of equal area whose sector counts keep the cells near square,
  * after Beckers and Beckers 2012), separately for the first bounce and for
@@ -14642,8 +14648,6 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes)
 }
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
-/* ---- Microsurface generation and the virtual gonioreflectometer ---- */
-
 /* ---- Generation (Ribardiere et al. 2019, Sec. 4.2, Algorithm 1) ----
  *
  * Discretization. A grid point (x, y) carries one target slope t = (tx, ty),
@@ -15110,7 +15114,8 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
     mf__ms_free(&m);
     return MF_SUCCESS;
 }
-
+#endif /* MF_NO_MICROSURFACE */
+#ifndef MF_NO_MICROSURFACE
 /* ---- The virtual gonioreflectometer ---- */
 
 MFDEF void mf_gonio_release(mf_gonio *g)

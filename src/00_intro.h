@@ -58,8 +58,8 @@
  *   == 14. The built-in GGX LTC table (generated data)
  *   == 15. Inverse Bin Map: compact integral histograms of normal maps,
  *          footprint queries, the filtered glint BRDF, sampling and pdf
- *   == 16. Microsurface generation from any distribution and a virtual
- *          gonioreflectometer
+ *   == 16. Microsurface generation from any distribution
+ *   == 16b. A virtual gonioreflectometer
  *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
  *   == 18. Energy compensation (Kulla & Conty 2017): albedo, the multiple-
  *          scattering lobe and its sampling, Turquin scaling, table builders
