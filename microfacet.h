@@ -5,9 +5,10 @@
  *   06_kind_leadr.h 06_kind_student_t.h 06_kind_tabulated.h 07_ndf_dispatch.h
  *   08_transform.h 09_smith.h 09_tabulated_from_ndf.h 10_sampling.h 11_brdf.h
  *   11_dielectric.h 12_leadr.h 13_ltc.h 13_ltc_shapes.h 14_ltc_table.h
- *   14_ltc_table_beckmann.h 15_ibm.h 16_microsurface.h 16_microsurface_gonio.h
- *   17_energy_table.h 18_energy.h 19_fresnel_f82_thin_film.h 20_eon.h
- *   21_sheen.h 97_deprecated.h 99_outro.h
+ *   14_ltc_table_beckmann.h 15_ibm_1_format.h 15_ibm_2_footprint.h
+ *   15_ibm_3_traverse.h 15_ibm_4_brdf.h 15_ibm_5_build.h 16_microsurface.h
+ *   16_microsurface_gonio.h 17_energy_table.h 18_energy.h
+ *   19_fresnel_f82_thin_film.h 20_eon.h 21_sheen.h 97_deprecated.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
  * Version 0.4.0.  MIT licensed (see the end of this file).
@@ -67,8 +68,12 @@
  *          horizon clipping, vector form factor, sphere lights, multi-scale
  *          roughness, fitting and tables
  *   == 14. The built-in GGX LTC table (generated data)
- *   == 15. Inverse Bin Map: compact integral histograms of normal maps,
- *          footprint queries, the filtered glint BRDF, sampling and pdf
+ *   == 15. Inverse Bin Map: compact integral histograms of normal maps;
+ *          overview, the mf_ibm type and its packed bit format
+ *   == 15b. IBM footprints: periods, pieces, exact areas
+ *   == 15c. IBM bin weights: the kd-tree traversal
+ *   == 15d. IBM filtered glint BRDF, sampling and pdf
+ *   == 15e. IBM build, save, load
  *   == 16. Microsurface generation from any distribution
  *   == 16b. A virtual gonioreflectometer
  *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
@@ -4193,8 +4198,12 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  * mf_ltc_beckmann_fresnel and mf_ltc_beckmann_table (13_ltc.h). */
 #ifndef MF_NO_IBM
 /* ======================================================================== */
-/* == 15. Inverse Bin Map                                                   */
+/* == 15. Inverse Bin Map: overview, layout and the packed bit format       */
 /* ======================================================================== */
+/* The Inverse Bin Map in five modules: this one (the mf_ibm type, its
+ * packed layout, bins), 15_ibm_2_footprint.h (footprint geometry),
+ * 15_ibm_3_traverse.h (bin weights by kd traversal), 15_ibm_4_brdf.h (the
+ * filtered BRDF, pdf and sampling), 15_ibm_5_build.h (build, save, load). */
 /* Atanasov et al. 2021 (thesis ch. 5): the filtered BRDF of a normal map over a
  * pixel footprint A (Eq. 5.1-5.3) grouped by directional bins (binned BRDF,
  * Eq. 5.7-5.8), truncated to the 21 bins around the half vector's bin (Eq.
@@ -4202,8 +4211,8 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  * shadowing (texel contribution C, Eq. 3.29); bin weights from the Inverse Bin
  * Map (Eq. 5.15, 5.17) with node-level prefiltering; sampling and pdf Eq. 5.16. */
 
-/* Use: build once per normal map and flake roughness (mf_ibm_build, section
- * 14; about 0.05-0.13 s and 16-28 MB for a 2048^2 map), then per shading point
+/* Use: build once per normal map and flake roughness (mf_ibm_build,
+ * 15_ibm_5_build.h; about 0.05-0.13 s and 16-28 MB for a 2048^2 map), then per shading point
  * pass the pixel footprint in texture space (e.g. from ray differentials):
  *
  *     mf_ibm ibm;
@@ -4396,6 +4405,58 @@ MF_COLD int mf_ibm_texel_bin(const mf_ibm *ibm, int x, int y);
  * the Beckmann roughness of the map's RMS slopes (sqrt(2 E[s^2]) per axis). */
 MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
 
+/* bit length of v (0 for 0): one instruction where there is one, else by
+ * halving (no loop over the bits) */
+MF_INLINE int mf__ibm_bitlen32(unsigned int v)
+{
+#ifdef MF__CLZ32
+    return v ? 32 - MF__CLZ32(v) : 0;
+#else
+    int k = 0;
+    if (v >> 16) { k += 16; v >>= 16; }
+    if (v >> 8) { k += 8; v >>= 8; }
+    if (v >> 4) { k += 4; v >>= 4; }
+    if (v >> 2) { k += 2; v >>= 2; }
+    if (v >> 1) { k += 1; v >>= 1; }
+    return k + (int)v;
+#endif
+}
+
+/* stored kd-tree levels of a bin of n texels: floor(log2(2 n / MF_IBM_TREE_MIN)) (0 below it), within the tree's depth */
+MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
+{
+    int k = mf__ibm_bitlen32(n / (unsigned int)MF_IBM_TREE_MIN);
+    k = k < 24 ? k : 24;
+    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
+}
+
+/* the block length of a bin of n texels: n, or n + 2^k - 1 with the top k
+ * levels of its kd-tree (the inner boundaries of its level-k nodes) */
+MF_INLINE unsigned int mf__ibm_block_len(const mf_ibm *ibm, unsigned int n)
+{
+    return n < (unsigned int)MF_IBM_TREE_MIN ? n : n + (1u << mf__ibm_tree_levels(ibm, n)) - 1u;
+}
+
+/* The texel count of a bin whose block has length len: len = n + 2^k(n) - 1
+ * is strictly increasing in n; *k: the stored levels (0: none, len = n). */
+MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len, int *k)
+{
+    unsigned int n = len;
+    if (len < (unsigned int)MF_IBM_TREE_MIN) { *k = 0; return len; }
+    for (*k = mf__ibm_tree_levels(ibm, len); *k > 0; --*k) {
+        n = len + 1u - (1u << *k);
+        if (mf__ibm_tree_levels(ibm, n) == *k) return n;
+    }
+    return len;   /* none (not a valid block: mf_ibm_load rejects it) */
+}
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15b. Inverse Bin Map: footprints (periods, pieces, exact areas)       */
+/* ======================================================================== */
+/* A pixel footprint (mf_footprint) cut into the period cells of the tiled
+ * map and the convex pieces each texel or kd node is clipped against, with
+ * exact areas (closed form for one cutting edge, Green's theorem else). */
 /* ---- footprints: periods, pieces, exact areas ---- */
 
 #define MF__IBM_NONE 0     /* no texel (center not finite) */
@@ -4403,118 +4464,6 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
 #define MF__IBM_EXACT 2    /* full periods plus exact pieces */
 #define MF__IBM_GLOBAL 3   /* too many periods: the whole map's histogram */
 
-/* ---- bin weights: a window of bins around a center bin ---- */
-
-/* Fraction of the footprint's area whose texels fall in `bin` (texels are
- * constant squares; Eq. 5.3, 5.8). Exact (polygon clipping) for any
- * parallelogram, rectangles through a fast path, wrapping across the border.
- * Footprints covering whole periods count them from the bin sizes; if the
- * footprint's boundary cuts more than MF_IBM_MAX_PIECES period cells the
- * weight is that of the whole map (n_bin / N) - exact when the footprint is a
- * union of whole periods, otherwise off by at most the cut cells' share of
- * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
- * the bin of the texel at the center, else 0; non-finite center: 0.
- * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
- * two index reads a window row) returns before any footprint work, and so
- * does a bin of 128 or more whose stored kd-tree top has no texel near the
- * footprint, or bins of at most 48 texels in all none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
- * texels visit the box (its bin-map rows prefetched), reading each texel's
- * bin before clipping it, unless the wanted bins hold fewer than 2 times
- * the box's texels (then their kd-trees are traversed); larger ones
- * traverse the kd-trees, where a kd node that the footprint's edge cuts and
- * whose texels all lie in the bin (flat regions) counts its box's area in
- * the footprint without descending. Footprints of a few texels get their
- * texels' areas row by row (two clips per row, then each texel's column
- * by Green's theorem along the row's edges); a texel
- * (or node) cut by one footprint edge gets its area in closed form, by
- * more edges by Green's theorem. Bins that hold at most 48 texels each on
- * average, for a footprint whose texel box meets at most 3 periods each
- * way (across the border too), take their texels from their lists without a
- * traversal: a texel's center in the footprint's coordinates decides it
- * wholly inside or outside, and only texels that the boundary may cut are
- * clipped (where the footprint's box would be visited, only a single bin,
- * of at most 128, which also skips the early exits above). */
-MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
-
-/* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
- * ibm->radius: the 21 bins of Sec. 5.4.2 for r = 2) that hold texels, with
- * their weights, in one traversal. bins and weights must hold
- * MF_IBM_MAX_WINDOW entries; returns how many were written. */
-MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
-                                           mf_real *weights);
-
-/* ---- the filtered BRDF (Eq. 5.13), its pdf (Eq. 5.16) and sampling ---- */
-
-/* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
- * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
- * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
- * Truncated like Eq. 5.13 (measured truncation: docs/ACCURACY.md); for
- * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
- * the horizon and for degenerate input. */
-MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
-
-/* Density of mf_ibm_sample per unit solid angle of wi (Eq. 5.16 with the
- * visible-normal density of each bin's lobe): sum of W_j D_wo(h; t_j) /
- * (4 wo.h) over the same bins as mf_ibm_brdf. It integrates to 1 minus the
- * no-sample mass of mf_ibm_sample. */
-MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
-
-/* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
-MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
-
-/* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
- * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
- * of the flake Beckmann around t_j for wo; wi = reflect(wo, m). The zero vector
- * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
- * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
- * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
-MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
-                                mf_real u3, mf_real u4);
-
-/* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
-#define MF_IBM_MIN_CUT MF_R(0.1)
-/* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
- * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
- * normalized before binning), row-major, texel (x, y) at index y*width + x.
- * flake_alpha is the Beckmann flake roughness (clamped to [MF_ALPHA_MIN,
- * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
- * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
- * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
- * MF_IBM_MAX_RES. mf_ibm_build_ex also takes options (NULL or all-zero:
- * the defaults): the resolution b (0: Eq. 5.14) and the cut in sigmas (0: 3,
- * else in [MF_IBM_MIN_CUT, 10]: a cut that rounds to 0 in float would not
- * reload); the neighbourhood radius r grows with b so
- * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
- * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
- * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
- * sizes, alpha <= 0 or NaN, resolution or cut out of range
- * (MF_ERROR_INVALID_ARGUMENT); a NaN, non-unit or below-horizon normal
- * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
- * allocated on failure, and *ibm is zeroed. Cost: two passes over the
- * normals (binning in 8 x 8 tiles, then a counting sort in Morton order)
- * and the kd-tree tops (timings: docs/PERFORMANCE.md, `make bench`). */
-typedef struct mf_ibm_options {
-    int resolution;          /* bins per axis b; 0: Eq. 5.14 */
-    mf_real cut_sigmas;      /* the lobe's cut in sigmas; 0: 3 */
-} mf_ibm_options;
-MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
-MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                const mf_ibm_options *options);
-MFDEF void mf_ibm_release(mf_ibm *ibm);
-/* Bytes held: the single integer array (ibm->words * 4). */
-MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
-/* Save and load (no stdio): mf_ibm_save writes the bytes the map needs to
- * *bytes and copies the integer array (native byte order) to buf when cap is
- * large enough. buf NULL: a size query (MF_SUCCESS); cap too small:
- * MF_ERROR_BUFFER_TOO_SMALL, nothing written; an empty map or NULL:
- * MF_ERROR_INVALID_ARGUMENT, *bytes = 0. mf_ibm_load copies such a buffer (any alignment) into
- * a new map after validating everything a query reads: magic, version, sizes,
- * a checksum, the index, every texel position (in range, sorted, each texel
- * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
- * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
- * mf_ibm_set_shadowing is not saved: set it again after loading. */
-MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes);
-MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 /* Area of the unit square where a linear function is >= 0, from its values
  * v[0..3] at the corners (0,0), (1,0), (1,1), (0,1): the triangle, trapezoid
  * or pentagon that one line cuts, each from crossing fractions v_i / (v_i -
@@ -4572,52 +4521,139 @@ MF_INLINE mf_real mf__ibm_green_area(const mf_real *x, const mf_real *y, int n, 
     if (cb && ct) s += W * mf_max(mf_clamp(vt, MF_R(0.0), H) - mf_clamp(vb, MF_R(0.0), H), MF_R(0.0));
     return mf_clamp(s, MF_R(0.0), W * H);
 }
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15c. Inverse Bin Map: bin weights (the kd-tree traversal)             */
+/* ======================================================================== */
+/* The weight of a bin, or of a window of bins, over a footprint (Eq. 5.3,
+ * 5.8, 5.15, 5.17): direct texel sums for small footprints, the kd-trees of
+ * the bins' texel lists for large ones, early exits for empty bins. */
+/* ---- bin weights: a window of bins around a center bin ---- */
 
-/* bit length of v (0 for 0): one instruction where there is one, else by
- * halving (no loop over the bits) */
-MF_INLINE int mf__ibm_bitlen32(unsigned int v)
-{
-#ifdef MF__CLZ32
-    return v ? 32 - MF__CLZ32(v) : 0;
-#else
-    int k = 0;
-    if (v >> 16) { k += 16; v >>= 16; }
-    if (v >> 8) { k += 8; v >>= 8; }
-    if (v >> 4) { k += 4; v >>= 4; }
-    if (v >> 2) { k += 2; v >>= 2; }
-    if (v >> 1) { k += 1; v >>= 1; }
-    return k + (int)v;
-#endif
-}
+/* Fraction of the footprint's area whose texels fall in `bin` (texels are
+ * constant squares; Eq. 5.3, 5.8). Exact (polygon clipping) for any
+ * parallelogram, rectangles through a fast path, wrapping across the border.
+ * Footprints covering whole periods count them from the bin sizes; if the
+ * footprint's boundary cuts more than MF_IBM_MAX_PIECES period cells the
+ * weight is that of the whole map (n_bin / N) - exact when the footprint is a
+ * union of whole periods, otherwise off by at most the cut cells' share of
+ * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
+ * the bin of the texel at the center, else 0; non-finite center: 0.
+ * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
+ * two index reads a window row) returns before any footprint work, and so
+ * does a bin of 128 or more whose stored kd-tree top has no texel near the
+ * footprint, or bins of at most 48 texels in all none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
+ * texels visit the box (its bin-map rows prefetched), reading each texel's
+ * bin before clipping it, unless the wanted bins hold fewer than 2 times
+ * the box's texels (then their kd-trees are traversed); larger ones
+ * traverse the kd-trees, where a kd node that the footprint's edge cuts and
+ * whose texels all lie in the bin (flat regions) counts its box's area in
+ * the footprint without descending. Footprints of a few texels get their
+ * texels' areas row by row (two clips per row, then each texel's column
+ * by Green's theorem along the row's edges); a texel
+ * (or node) cut by one footprint edge gets its area in closed form, by
+ * more edges by Green's theorem. Bins that hold at most 48 texels each on
+ * average, for a footprint whose texel box meets at most 3 periods each
+ * way (across the border too), take their texels from their lists without a
+ * traversal: a texel's center in the footprint's coordinates decides it
+ * wholly inside or outside, and only texels that the boundary may cut are
+ * clipped (where the footprint's box would be visited, only a single bin,
+ * of at most 128, which also skips the early exits above). */
+MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
-/* stored kd-tree levels of a bin of n texels: floor(log2(2 n / MF_IBM_TREE_MIN)) (0 below it), within the tree's depth */
-MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
-{
-    int k = mf__ibm_bitlen32(n / (unsigned int)MF_IBM_TREE_MIN);
-    k = k < 24 ? k : 24;
-    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
-}
+/* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
+ * ibm->radius: the 21 bins of Sec. 5.4.2 for r = 2) that hold texels, with
+ * their weights, in one traversal. bins and weights must hold
+ * MF_IBM_MAX_WINDOW entries; returns how many were written. */
+MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
+                                           mf_real *weights);
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15d. Inverse Bin Map: the filtered glint BRDF, its pdf, sampling      */
+/* ======================================================================== */
+/* The binned, truncated filtered BRDF of Eq. 5.13 over the bin weights of
+ * 15_ibm_3_traverse.h, each bin a Beckmann flake lobe around its mean
+ * normal; its pdf (Eq. 5.16) and the sampler whose density it is. */
+/* ---- the filtered BRDF (Eq. 5.13), its pdf (Eq. 5.16) and sampling ---- */
 
-/* the block length of a bin of n texels: n, or n + 2^k - 1 with the top k
- * levels of its kd-tree (the inner boundaries of its level-k nodes) */
-MF_INLINE unsigned int mf__ibm_block_len(const mf_ibm *ibm, unsigned int n)
-{
-    return n < (unsigned int)MF_IBM_TREE_MIN ? n : n + (1u << mf__ibm_tree_levels(ibm, n)) - 1u;
-}
+/* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
+ * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
+ * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
+ * Truncated like Eq. 5.13 (measured truncation: docs/ACCURACY.md); for
+ * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
+ * the horizon and for degenerate input. */
+MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
 
-/* The texel count of a bin whose block has length len: len = n + 2^k(n) - 1
- * is strictly increasing in n; *k: the stored levels (0: none, len = n). */
-MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len, int *k)
-{
-    unsigned int n = len;
-    if (len < (unsigned int)MF_IBM_TREE_MIN) { *k = 0; return len; }
-    for (*k = mf__ibm_tree_levels(ibm, len); *k > 0; --*k) {
-        n = len + 1u - (1u << *k);
-        if (mf__ibm_tree_levels(ibm, n) == *k) return n;
-    }
-    return len;   /* none (not a valid block: mf_ibm_load rejects it) */
-}
+/* Density of mf_ibm_sample per unit solid angle of wi (Eq. 5.16 with the
+ * visible-normal density of each bin's lobe): sum of W_j D_wo(h; t_j) /
+ * (4 wo.h) over the same bins as mf_ibm_brdf. It integrates to 1 minus the
+ * no-sample mass of mf_ibm_sample. */
+MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
 
+/* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
+MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
+
+/* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
+ * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
+ * of the flake Beckmann around t_j for wo; wi = reflect(wo, m). The zero vector
+ * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
+ * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
+ * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
+MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                mf_real u3, mf_real u4);
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15e. Inverse Bin Map: build, save, load                               */
+/* ======================================================================== */
+/* The builder of the packed array of 15_ibm_1_format.h from a normal map,
+ * and its save and load (validated: a loaded map is safe to query). */
+/* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
+#define MF_IBM_MIN_CUT MF_R(0.1)
+/* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
+ * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
+ * normalized before binning), row-major, texel (x, y) at index y*width + x.
+ * flake_alpha is the Beckmann flake roughness (clamped to [MF_ALPHA_MIN,
+ * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
+ * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
+ * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
+ * MF_IBM_MAX_RES. mf_ibm_build_ex also takes options (NULL or all-zero:
+ * the defaults): the resolution b (0: Eq. 5.14) and the cut in sigmas (0: 3,
+ * else in [MF_IBM_MIN_CUT, 10]: a cut that rounds to 0 in float would not
+ * reload); the neighbourhood radius r grows with b so
+ * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
+ * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
+ * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
+ * sizes, alpha <= 0 or NaN, resolution or cut out of range
+ * (MF_ERROR_INVALID_ARGUMENT); a NaN, non-unit or below-horizon normal
+ * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
+ * allocated on failure, and *ibm is zeroed. Cost: two passes over the
+ * normals (binning in 8 x 8 tiles, then a counting sort in Morton order)
+ * and the kd-tree tops (timings: docs/PERFORMANCE.md, `make bench`). */
+typedef struct mf_ibm_options {
+    int resolution;          /* bins per axis b; 0: Eq. 5.14 */
+    mf_real cut_sigmas;      /* the lobe's cut in sigmas; 0: 3 */
+} mf_ibm_options;
+MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
+MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
+                                const mf_ibm_options *options);
+MFDEF void mf_ibm_release(mf_ibm *ibm);
+/* Bytes held: the single integer array (ibm->words * 4). */
+MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
+/* Save and load (no stdio): mf_ibm_save writes the bytes the map needs to
+ * *bytes and copies the integer array (native byte order) to buf when cap is
+ * large enough. buf NULL: a size query (MF_SUCCESS); cap too small:
+ * MF_ERROR_BUFFER_TOO_SMALL, nothing written; an empty map or NULL:
+ * MF_ERROR_INVALID_ARGUMENT, *bytes = 0. mf_ibm_load copies such a buffer (any alignment) into
+ * a new map after validating everything a query reads: magic, version, sizes,
+ * a checksum, the index, every texel position (in range, sorted, each texel
+ * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
+ * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
+ * mf_ibm_set_shadowing is not saved: set it again after loading. */
+MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes);
+MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
 /* ======================================================================== */
@@ -7185,7 +7221,8 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d)
     ibm->has_shadow = d ? 1 : 0;
     if (d) ibm->shadow = *d;
 }
-
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
 typedef struct mf__ibm_fp {
     int mode, tx, ty;          /* POINT: the texel */
     int direct;                /* sum the covered texels directly (Eq. 5.2) */
@@ -7628,7 +7665,8 @@ MF_INLINE mf_real mf__ibm_box_area(const mf__ibm_piece *pc, int x0, int y0, int 
     }
     return mf__ibm_rect_area(pc, (mf_real)(x0 - pc->ox), (mf_real)(y0 - pc->oy), W, H, lo, hi);
 }
-
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
 /* The bins whose weights a query needs: those of the window (cx + dx, cy + dy),
  * |dx|, |dy| <= r, that are listed; slot maps a window cell to its list entry. */
 typedef struct mf__ibm_set {
@@ -8521,7 +8559,8 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
     }
     return n;
 }
-
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
 /* The flake Beckmann Lambda of a direction at sin^2 s2 and cosine c from a
  * bin normal; 0 where it is below 3e-19 (a = cot / alpha > 6), which adds
  * nothing to 1 + Lambda in float or double (Eq. 84 ~ exp(-a^2) / (2 a^3

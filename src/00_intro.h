@@ -56,8 +56,12 @@
  *          horizon clipping, vector form factor, sphere lights, multi-scale
  *          roughness, fitting and tables
  *   == 14. The built-in GGX LTC table (generated data)
- *   == 15. Inverse Bin Map: compact integral histograms of normal maps,
- *          footprint queries, the filtered glint BRDF, sampling and pdf
+ *   == 15. Inverse Bin Map: compact integral histograms of normal maps;
+ *          overview, the mf_ibm type and its packed bit format
+ *   == 15b. IBM footprints: periods, pieces, exact areas
+ *   == 15c. IBM bin weights: the kd-tree traversal
+ *   == 15d. IBM filtered glint BRDF, sampling and pdf
+ *   == 15e. IBM build, save, load
  *   == 16. Microsurface generation from any distribution
  *   == 16b. A virtual gonioreflectometer
  *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
