@@ -67,7 +67,8 @@
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
  *          horizon clipping, vector form factor, sphere lights, multi-scale
  *          roughness, fitting and tables
- *   == 14. The built-in GGX LTC table (generated data)
+ *   == 13b. LTC light shapes: ellipses, disks, lines, tubes, textured quads
+ *   == 14. The built-in GGX and Beckmann LTC tables (generated data)
  *   == 15. Inverse Bin Map: compact integral histograms of normal maps;
  *          overview, the mf_ibm type and its packed bit format
  *   == 15b. IBM footprints: periods, pieces, exact areas
@@ -80,6 +81,10 @@
  *   == 18. Energy compensation (Kulla & Conty 2017): albedo, the multiple-
  *          scattering lobe and its sampling, Turquin scaling, table builders
  *          for any kind, rough dielectrics of a given eta
+ *   == 19. F82-tint and thin-film Fresnel
+ *   == 20. EON: energy-preserving Oren-Nayar diffuse
+ *   == 21. Sheen: the Charlie distribution with its exact Smith Lambda
+ *   == 97. Deprecated 0.3 names (MF_NO_DEPRECATED drops them)
  *
  * ADDING A DISTRIBUTION KIND
  *
@@ -89,7 +94,10 @@
  *      mf_ndf stays within 64 bytes in float; larger data goes in a built
  *      object it points to, like mf_tabulated or mf_gtr_table), a constructor
  *      that fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
- *      _sample_D and _sample_visible (contract in 05_ndf.h).
+ *      _sample_D and _sample_visible (contract in 05_ndf.h). A kind may use
+ *      modules 1-5b and the kinds whose files sort before its own, nothing
+ *      later (tools/prefix_check.sh, run by `make header`, checks it);
+ *      07_ndf_dispatch.h then reaches it through its traits by itself.
  *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
  *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
  *      front ends inline, whether its mean slope is 0, which numerical
