@@ -32,10 +32,10 @@ else
 EXR_STEPS  := exr_skip
 endif
 
-.PHONY: fuzz fuzz-build check-all api kinds history warnings config fastmath package readme include_cost
+.PHONY: fuzz fuzz-build check-all api kinds prefix history warnings config fastmath package readme include_cost
 .PHONY: all test check test-c test-cpp asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
-        $(foreach s,header api kinds history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+        $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
@@ -47,6 +47,7 @@ header:
 	@sh tools/amalgamate.sh --readme > README.md.tmp && mv README.md.tmp README.md
 	@mkdir -p docs && sh tools/amalgamate.sh --api > docs/API.md.tmp && mv docs/API.md.tmp docs/API.md
 	@echo "microfacet.h generated from $(words $(SRC_MODULES)) modules in src/ (and the API index: README.md, docs/API.md)"
+	@sh tools/prefix_check.sh "$(CC)"
 # make test runs this: the committed header and README's API index must be
 # what the generator makes
 header-check:
@@ -174,7 +175,7 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 RES := $(BUILD)/results
 RUN_STEP := sh tests/run_step.sh
 SUM := sh tests/sum_results.sh $(RES)
-CHECK_STEPS := header api kinds history warnings config fastmath package readme
+CHECK_STEPS := header api kinds prefix history warnings config fastmath package readme
 TEST_STEPS := include_cost $(CHECK_STEPS) c_double c_float examples $(EXR_STEPS) cpp_double cpp_float
 
 $(RES):
@@ -184,6 +185,8 @@ CHECK_header := $(MAKE) --no-print-directory header-check
 CHECK_api := sh tools/api_rules.sh
 # no module but 05_ndf.h and the kinds' own tests a kind by name (traits instead)
 CHECK_kinds := sh tests/kind_names_check.sh
+# a module uses only the modules before it (each prefix of the list compiles)
+CHECK_prefix := sh tools/prefix_check.sh "$(CC)"
 CHECK_history := sh tests/history_check.sh
 # the header alone compiles cleanly as C99/C11 and C++98..20, float and
 # double, gcc and clang (when present), with -Werror
@@ -202,7 +205,7 @@ step-$(1): | $(RES)
 endef
 $(foreach c,$(CHECK_STEPS) include_cost,$(eval $(call CHECK_STEP,$(c))))
 # each check alone: make warnings, make config, ... (make header-check: the header)
-CHECK_ALONE := api kinds history warnings config fastmath package readme include_cost
+CHECK_ALONE := api kinds prefix history warnings config fastmath package readme include_cost
 $(CHECK_ALONE): %: step-%
 	@$(SUM) $*
 step-examples: $(CONFIG) | $(RES)

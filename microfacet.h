@@ -1,12 +1,15 @@
 /* microfacet.h - GENERATED FILE, do not edit: edit the module sources in
  * src/ and run `make header` (tools/amalgamate.sh). Assembled from:
- *   00_intro.h 01_config.h 02_vec.h 03_fresnel.h 04_special.h 05_ndf.h
- *   06_kind_beckmann.h 06_kind_charlie.h 06_kind_ggx.h 06_kind_gtr.h
- *   06_kind_leadr.h 06_kind_student_t.h 06_kind_tabulated.h 07_numeric_vndf.h
- *   08_transform.h 09_smith.h 10_sampling.h 11_brdf.h 11_dielectric.h
- *   12_leadr.h 13_ltc.h 13_ltc_shapes.h 14_ltc_table.h 14_ltc_table_beckmann.h
- *   15_ibm.h 16_microsurface.h 17_energy_table.h 18_energy.h
- *   19_fresnel_f82_thin_film.h 20_eon.h 21_sheen.h 97_deprecated.h 99_outro.h
+ *   00_intro.h 01_config.h 02_vec.h 03_fresnel.h 04_special.h 04_util.h
+ *   05_ndf.h 05_numeric_vndf.h 06_kind_beckmann.h 06_kind_charlie.h
+ *   06_kind_ggx.h 06_kind_gtr.h 06_kind_leadr.h 06_kind_student_t.h
+ *   06_kind_tabulated.h 07_ndf_dispatch.h 08_transform.h 09_smith.h
+ *   09_tabulated_from_ndf.h 10_sampling.h 11_brdf.h 11_dielectric.h 12_leadr.h
+ *   13_ltc.h 13_ltc_shapes.h 14_ltc_table.h 14_ltc_table_beckmann.h
+ *   15_ibm_1_format.h 15_ibm_2_footprint.h 15_ibm_3_traverse.h 15_ibm_4_brdf.h
+ *   15_ibm_5_build.h 16_microsurface.h 16_microsurface_gonio.h
+ *   17_energy_table.h 18_energy.h 19_fresnel_f82_thin_film.h 20_eon.h
+ *   21_sheen.h 97_deprecated.h 99_outro.h
  */
 /* microfacet.h - microfacet BRDF/NDF math in one dependency-free C header.
  * Version 0.4.0.  MIT licensed (see the end of this file).
@@ -41,17 +44,22 @@
  *   == 2. Vectors, 2x2 matrices and frames
  *   == 3. Fresnel
  *   == 4. Special functions (erf inverse, incomplete beta, stable helpers,
- *         Newton steps and Gauss-Legendre nodes for the numerical samplers)
- *   == 5. Distributions: the mf_ndf value type, its kinds and the one
- *         dispatch point
+ *         Newton steps for the numerical samplers)
+ *   == 4b. Utilities: the rejection samplers' random stream, quadrature rules
+ *          (Gauss-Legendre, Gauss-Jacobi); PCG32, sorting, selection and an
+ *          FFT for the microsurface generator and the gonioreflectometer
+ *   == 5. Distributions: the mf_ndf value type, its kinds (MF__NDF_KINDS
+ *         and their traits) and the inline front ends of the one dispatch
+ *   == 5b. Numerical visible-normal sampling of the heavy-tailed kinds and
+ *          of Charlie (through the trait ISO)
  *   == 6. Distribution kinds, one module each: Beckmann, Charlie (sheen),
  *         GGX, GTR, LEADR (non-centered Beckmann), Student-t, tabulated
  *         (piecewise-linear)
- *   == 7. Numerical visible-normal sampling of the heavy-tailed kinds and
- *         of Charlie
+ *   == 7. The kinds' dispatch: the cold switches of the generic operations
  *   == 8. Linearly transformed microsurfaces: any 2x2 transform of any
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 9. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
+ *   == 9b. Tabulating any distribution (mf_tabulated_from_ndf)
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
  *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
  *         sampling; Fresnel averages
@@ -61,15 +69,24 @@
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
  *          horizon clipping, vector form factor, sphere lights, multi-scale
  *          roughness, fitting and tables
- *   == 14. The built-in GGX LTC table (generated data)
- *   == 15. Inverse Bin Map: compact integral histograms of normal maps,
- *          footprint queries, the filtered glint BRDF, sampling and pdf
- *   == 16. Microsurface generation from any distribution and a virtual
- *          gonioreflectometer
+ *   == 13b. LTC light shapes: ellipses, disks, lines, tubes, textured quads
+ *   == 14. The built-in GGX and Beckmann LTC tables (generated data)
+ *   == 15. Inverse Bin Map: compact integral histograms of normal maps;
+ *          overview, the mf_ibm type and its packed bit format
+ *   == 15b. IBM footprints: periods, pieces, exact areas
+ *   == 15c. IBM bin weights: the kd-tree traversal
+ *   == 15d. IBM filtered glint BRDF, sampling and pdf
+ *   == 15e. IBM build, save, load
+ *   == 16. Microsurface generation from any distribution
+ *   == 16b. A virtual gonioreflectometer
  *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
  *   == 18. Energy compensation (Kulla & Conty 2017): albedo, the multiple-
  *          scattering lobe and its sampling, Turquin scaling, table builders
  *          for any kind, rough dielectrics of a given eta
+ *   == 19. F82-tint and thin-film Fresnel
+ *   == 20. EON: energy-preserving Oren-Nayar diffuse
+ *   == 21. Sheen: the Charlie distribution with its exact Smith Lambda
+ *   == 97. Deprecated 0.3 names (MF_NO_DEPRECATED drops them)
  *
  * ADDING A DISTRIBUTION KIND
  *
@@ -79,7 +96,10 @@
  *      mf_ndf stays within 64 bytes in float; larger data goes in a built
  *      object it points to, like mf_tabulated or mf_gtr_table), a constructor
  *      that fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
- *      _sample_D and _sample_visible (contract in 05_ndf.h).
+ *      _sample_D and _sample_visible (contract in 05_ndf.h). A kind may use
+ *      modules 1-5b and the kinds whose files sort before its own, nothing
+ *      later (tools/prefix_check.sh, run by `make header`, checks it);
+ *      07_ndf_dispatch.h then reaches it through its traits by itself.
  *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
  *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
  *      front ends inline, whether its mean slope is 0, which numerical
@@ -497,6 +517,7 @@ typedef float mf_real;
 #define mf__ndf_sample_D MF__SYM(mf__ndf_sample_D)
 #define mf__ndf_sample_visible MF__SYM(mf__ndf_sample_visible)
 #define mf__ndf_prepare MF__SYM(mf__ndf_prepare)
+#define mf__iso_sample_visible_view MF__SYM(mf__iso_sample_visible_view)
 #define mf__beckmann_visible_slopes MF__SYM(mf__beckmann_visible_slopes)
 #define mf__charlie_lambda_k MF__SYM(mf__charlie_lambda_k)
 #define mf__charlie_D MF__SYM(mf__charlie_D)
@@ -535,7 +556,6 @@ typedef float mf_real;
 #define mf__tabulated_lambda MF__SYM(mf__tabulated_lambda)
 #define mf__tabulated_sample_D MF__SYM(mf__tabulated_sample_D)
 #define mf__tabulated_sample_visible MF__SYM(mf__tabulated_sample_visible)
-#define mf__iso_sample_visible_view MF__SYM(mf__iso_sample_visible_view)
 #define mf_fresnel_dielectric_average MF__SYM(mf_fresnel_dielectric_average)
 #define mf_fresnel_conductor_average MF__SYM(mf_fresnel_conductor_average)
 #define mf_leadr_map_from_heights MF__SYM(mf_leadr_map_from_heights)
@@ -681,7 +701,7 @@ typedef struct mf_ndf_charlie {
 } mf_ndf_charlie;
 typedef struct mf_ndf_ggx { char none; } mf_ndf_ggx;   /* no parameters beyond mf_ndf.ax, ay */
 /* most nodes of the Lambda mixture rule (the rule takes fewer at larger
- * alpha: mf__gtr_mix_init) */
+ * alpha: mf__gtr_mix_init); at most MF__GJ_MAX of 04_util.h */
 #define MF__GTR_NQ 24
 /* What a GTR computes at each call without it: the Lambda rule at a
  * non-integer gamma, and the visible sampler's mixture envelope (gamma below
@@ -1066,6 +1086,15 @@ MF_INLINE mf_real mf__log1p_over_x(mf_real x)
     return MF_LOG1P(x) / x;
 }
 
+/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
+ * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
+ * power-law draws (GTR, Student-t) */
+MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
+{
+    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
+    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
+}
+
 /* Inverse of erf on (-1, 1): Giles' single-precision approximation (2010),
  * polished by Newton steps on erf/erfc. Finite for every input (clamped). */
 MF_INLINE mf_real mf__erfinv_giles(mf_real y)
@@ -1210,6 +1239,68 @@ MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
     return mf__betainc_xy(a, b, x, MF_R(1.0) - x, MF_LOG(x), MF_LOG1P(-x), lbeta);
 }
 /* ======================================================================== */
+/* == 4b. Utilities: random numbers, sorting, FFT, quadrature rules         */
+/* ======================================================================== */
+/* Tools that are not about light, each with its users: the rejection
+ * samplers' uniform stream (GTR, Student-t); quadrature rules (Gauss-Legendre
+ * with Legendre polynomials: the numerical samplers, tables and fits;
+ * Gauss-Jacobi: the GTR Lambda mixture); and, for the microsurface generator
+ * and the gonioreflectometer only (so under their opt-out MF_NO_MICROSURFACE),
+ * 64-bit integers, PCG32, heapsort, selection and a radix-2 FFT. */
+/* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
+ * a counter seeded by the bits of the caller's (u1, u2) rounded to float
+ * (u2's multiplied by an odd constant) and hashed by an integer mixer
+ * (xor-shift-multiply rounds), so every sampler
+ * stays a function of (u1, u2) and float and double builds draw the same
+ * stream (double adds 32 lower bits from a second hash). */
+MF_INLINE unsigned int mf__mix32(unsigned int x)
+{
+    x ^= x >> 16; x *= 0x7feb352du; x &= 0xffffffffu;
+    x ^= x >> 15; x *= 0x846ca68bu; x &= 0xffffffffu;
+    return x ^ (x >> 16);
+}
+MF_INLINE unsigned int mf__float_bits(mf_real x)
+{
+    union { float f; unsigned int u; } v;
+    v.f = (float)x;
+    return v.u;
+}
+MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
+{
+    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
+}
+/* the next uniform in [0, 1) */
+MF_INLINE mf_real mf__stream_next(unsigned int *s)
+{
+    mf_real u;
+    *s = (*s + 0x9e3779b9u) & 0xffffffffu;
+    u = (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
+#ifdef MF_USE_DOUBLE
+    u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
+#endif
+    return u;
+}
+/* a proposal's next two uniforms, in this order (two mf__stream_next calls
+ * as the arguments of one call would leave their order to the compiler) */
+MF_INLINE void mf__stream_next2(unsigned int *s, mf_real *u1, mf_real *u2)
+{
+    *u1 = mf__stream_next(s);
+    *u2 = mf__stream_next(s);
+}
+
+#ifndef MF_NO_MICROSURFACE
+/* 64-bit seeds: unsigned long long (C99, C++11; C++98 compilers accept it
+ * as an extension, quietly here) */
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wlong-long"
+#endif
+typedef unsigned long long mf_u64;
+#if defined(__GNUC__) || defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+#endif
+/* ======================================================================== */
 /* == 5. Distributions: the mf_ndf value type and its one dispatch point    */
 /* ======================================================================== */
 /* D(m) per unit solid angle, normalized so that integral D(m) (m.n) dm = 1
@@ -1258,7 +1349,8 @@ MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
  *   - and what its traits promise. The traits are the line's digits; no module
  *     but this one and the kind's own tests a kind by name (tests/kind_names_check.sh):
  *     INL  0: the generic front ends (mf_D, mf_lambda, mf_sample_D,
- *          mf_sample_visible) reach the kind through the cold dispatch below;
+ *          mf_sample_visible) reach the kind through the cold dispatch (declared
+ *          below, defined in 07_ndf_dispatch.h after the kinds);
  *          1: they inline its D, Lambda and NDF sampling, which are then
  *          MF_FORCE_INLINE, with mf__<name>_sample_D_dir (the NDF sample before
  *          normalization); 2: its visible normals too, with
@@ -1268,11 +1360,11 @@ MF_INLINE mf_real mf__betainc(mf_real a, mf_real b, mf_real x, mf_real lbeta)
  *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my),
  *          MF_FORCE_INLINE (the mean surface is tilted: projected area and BSDF
  *          weights use it).
- *     ISO  visible normals by the numerical inversion of 07_numeric_vndf.h
+ *     ISO  visible normals by the numerical inversion of 05_numeric_vndf.h
  *          through the NDF-cos CDF of an isotropic distribution: 0 none; 1 of
  *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
  *          The kind defines mf__<name>_tan2(d, t, q), mf__<name>_tail(d, tan2)
- *          and mf__<name>_vndf_p(d) (see 07_numeric_vndf.h).
+ *          and mf__<name>_vndf_p(d) (see 05_numeric_vndf.h).
  *     LTC  1: mf_ltc_table_build fits the kind's family of one roughness
  *          alpha and one shape gamma; the kind defines
  *          mf_ndf mf__<name>_family(mf_real alpha, mf_real gamma).
@@ -1470,7 +1562,8 @@ MF_FORCE_INLINE void mf__stretch_view(mf_real ax, mf_real ay, mf_vec3 w, mf_real
     else { *cp = MF_R(1.0); *sp = MF_R(0.0); }
 }
 /* The generic dispatch of the untransformed kinds (cold: the front ends in
- * modules 8-10 inline the kinds of INL > 0 and call these for the others).
+ * modules 8-10 inline the kinds of INL > 0 and call these for the others;
+ * defined in 07_ndf_dispatch.h, after the kinds).
  * An unknown kind gives 0, and no sample: the zero vector. */
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w);
@@ -1561,6 +1654,27 @@ MF_FORCE_INLINE void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *m
 #undef MF__NDF_TRY_SD1
 #undef MF__NDF_TRY_V2
 #undef MF__NDF_TRY_VD2
+/* ======================================================================== */
+/* == 5b. Numerical visible-normal sampling of the heavy-tailed kinds       */
+/* ======================================================================== */
+/* An exact inversion of the distribution of visible normals for isotropic
+ * kinds known through their NDF-sampling CDF (GTR, Student-t; the fallback of
+ * their rejection samplers after 64 proposals, and under test): the marginal
+ * of the D-cos mass by Gauss-Legendre panels, the azimuth given theta in
+ * closed form (see mf__iso_sample_visible). Cold. It precedes the kinds,
+ * which fall back on it, and reaches their CDF through the trait ISO
+ * (mf__ndf_iso_tan2 and the others, declared in 05_ndf.h, defined with the
+ * dispatch in 07_ndf_dispatch.h): no module circle. */
+/* wm with density D_w(wm) for the view w of any length (w.z >= 0), of the
+ * kind d stretched by (ax, ay) (GTR: 1, 1; Student-t: its roughness). */
+MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2);
+/* The same for the untransformed d itself, stretched as its trait ISO says
+ * (1: not, 2: by (ax, ay)); the zero vector for a kind without the trait. */
+MF_INLINE mf_vec3 mf__iso_sample_visible_kind(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    int s = mf__ndf_iso(d->type) == 2;
+    return mf__iso_sample_visible_view(d, s ? d->ax : MF_R(1.0), s ? d->ay : MF_R(1.0), w, u1, u2);
+}
 /* ======================================================================== */
 /* == 6. Distribution kinds: Beckmann                                       */
 /* ======================================================================== */
@@ -1806,56 +1920,6 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
     return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
-/* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) rounded to float
- * (u2's multiplied by an odd constant) and hashed by an integer mixer
- * (xor-shift-multiply rounds), so every sampler
- * stays a function of (u1, u2) and float and double builds draw the same
- * stream (double adds 32 lower bits from a second hash). */
-MF_INLINE unsigned int mf__mix32(unsigned int x)
-{
-    x ^= x >> 16; x *= 0x7feb352du; x &= 0xffffffffu;
-    x ^= x >> 15; x *= 0x846ca68bu; x &= 0xffffffffu;
-    return x ^ (x >> 16);
-}
-MF_INLINE unsigned int mf__float_bits(mf_real x)
-{
-    union { float f; unsigned int u; } v;
-    v.f = (float)x;
-    return v.u;
-}
-MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
-{
-    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
-}
-/* the next uniform in [0, 1) */
-MF_INLINE mf_real mf__stream_next(unsigned int *s)
-{
-    mf_real u;
-    *s = (*s + 0x9e3779b9u) & 0xffffffffu;
-    u = (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
-#ifdef MF_USE_DOUBLE
-    u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
-#endif
-    return u;
-}
-/* a proposal's next two uniforms, in this order (two mf__stream_next calls
- * as the arguments of one call would leave their order to the compiler) */
-MF_INLINE void mf__stream_next2(unsigned int *s, mf_real *u1, mf_real *u2)
-{
-    *u1 = mf__stream_next(s);
-    *u2 = mf__stream_next(s);
-}
-
-/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
- * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
- * power-law draws (GTR, Student-t) */
-MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
-{
-    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
-    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
-}
-
 /* The kind's entries of the generic dispatch (05_ndf.h; INL 2: the front
  * ends inline them). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }
@@ -1901,7 +1965,7 @@ MF_INLINE mf_ndf mf__ggx_family(mf_real alpha, mf_real gamma)
  * a microsecond). NDF sampling by the closed-form inverse CDF
  * (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
  * mixture of GGX lobes (mf__gtr_sample_visible), falling back on the exact
- * numerical inversion of 07_numeric_vndf.h. Everything but the constructors
+ * numerical inversion of 05_numeric_vndf.h. Everything but the constructors
  * is cold. */
 /* mf_ndf.mode of a GTR: the Lambda mixture (0 closed form at integer gamma,
  * mixture of 1 GGX, 2 gamma-3, 3 gamma-4) times 4, plus the visible sampler
@@ -1970,7 +2034,7 @@ MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h; ISO 1). */
+ * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h; ISO 1). */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
@@ -2059,7 +2123,7 @@ MF_FORCE_INLINE void mf__leadr_mean_slope(const mf_ndf *d, mf_real *mx, mf_real 
  * given 1 - x unrounded); NDF sampling by the closed-form inverse CDF;
  * visible normals by exact rejection from GGX or from an exact GGX mixture
  * (mf__student_t_sample_visible), falling back on the exact numerical
- * inversion of 07_numeric_vndf.h. Everything but the constructor is cold. */
+ * inversion of 05_numeric_vndf.h. Everything but the constructor is cold. */
 MF_COLD void mf__student_t_sampler_init(mf_ndf_student_t *p);
 /* Student's t-distribution of slopes (STD), anisotropic. gamma in
  * [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] (clamped). */
@@ -2087,14 +2151,14 @@ MF_INLINE mf_ndf mf__student_t_family(mf_real alpha, mf_real gamma)
     return mf_student_t(alpha, alpha, gamma);
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h). */
+ * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h). */
 MF_COLD mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__student_t_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__student_t_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__student_t_tail(const mf_ndf *d, mf_real tan2);
-/* Exponent p of the numerical sampler's substitution (07_numeric_vndf.h): it
+/* Exponent p of the numerical sampler's substitution (05_numeric_vndf.h): it
  * must cancel the tail tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2), p = 2 / (1 - beta). */
 MF_INLINE mf_real mf__student_t_vndf_p(const mf_ndf *d)
 {
@@ -2161,7 +2225,8 @@ MF_INLINE mf_ndf mf_tabulated_ndf(const mf_tabulated *t)
  * elliptical anisotropy tabulate the isotropic base of roughness
  * sqrt(ax ay) and apply mf_transformed with M = diag(a/ax, a/ay), exact to the
  * tabulation error). The distribution refers to t: keep t alive and unchanged
- * while it is used. */
+ * while it is used. (mf_tabulated_from_ndf is defined in 09_tabulated_from_ndf.h,
+ * after mf_D.) */
 #define MF_TABULATED_MAX_POINTS 4096
 MFDEF mf_result mf_tabulated_build(mf_tabulated *t, const mf_real *theta, const mf_real *D_x,
                                    const mf_real *D_y, int n);
@@ -2186,23 +2251,13 @@ MF_COLD mf_real mf__tabulated_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__tabulated_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 /* ======================================================================== */
-/* == 7. Numerical visible-normal sampling of the heavy-tailed kinds        */
+/* == 7. The kinds' dispatch: the generic operations' switches              */
 /* ======================================================================== */
-/* An exact inversion of the distribution of visible normals for isotropic
- * kinds known through their NDF-sampling CDF (GTR, Student-t; the fallback of
- * their rejection samplers after 64 proposals, and under test): the marginal
- * of the D-cos mass by Gauss-Legendre panels, the azimuth given theta in
- * closed form (see mf__iso_sample_visible). Cold. */
-/* wm with density D_w(wm) for the view w of any length (w.z >= 0), of the
- * kind d stretched by (ax, ay) (GTR: 1, 1; Student-t: its roughness). */
-MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2);
-/* The same for the untransformed d itself, stretched as its trait ISO says
- * (1: not, 2: by (ax, ay)); the zero vector for a kind without the trait. */
-MF_INLINE mf_vec3 mf__iso_sample_visible_kind(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
-{
-    int s = mf__ndf_iso(d->type) == 2;
-    return mf__iso_sample_visible_view(d, s ? d->ax : MF_R(1.0), s ? d->ay : MF_R(1.0), w, u1, u2);
-}
+/* The cold dispatch of the untransformed kinds declared in 05_ndf.h (the
+ * front ends of modules 8-10 inline the kinds of INL > 0 and call these for
+ * the others), with the trait entries ISO, LTC and PREP. It follows the kinds
+ * (06_kind_*.h), whose functions it calls; every switch is generated from
+ * MF__NDF_KINDS, so a new kind needs no line here. */
 /* ======================================================================== */
 /* == 8. Linearly transformed microsurfaces                                 */
 /* ======================================================================== */
@@ -2492,6 +2547,12 @@ MF_FORCE_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
     return mf__cap(c * mf_D(d, wm) / mf_projected_area(d, w));
 }
 /* ======================================================================== */
+/* == 9b. Tabulating any distribution: mf_tabulated_from_ndf                */
+/* ======================================================================== */
+/* The builder of a tabulated kind (06_kind_tabulated.h) from any mf_ndf,
+ * transformed or not: it evaluates D through mf_D (08_transform.h), so it
+ * follows the front ends. Contract with the declaration in 06_kind_tabulated.h. */
+/* ======================================================================== */
 /* == 10. Sampling                                                          */
 /* ======================================================================== */
 /* mf_sample_D draws wm with density D(wm) wm.z (Walter et al. 2007): the
@@ -2506,7 +2567,7 @@ MF_FORCE_INLINE mf_real mf_D_visible(const mf_ndf *d, mf_vec3 w, mf_vec3 wm)
  *   GTR, Student-t  exact rejection from GGX's VNDF or from an exact
  *             mixture of GGX lobes (mf__gtr_sample_visible,
  *             mf__student_t_sample_visible), the exact numerical inversion
- *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
+ *             (05_numeric_vndf.h) as the fallback; their NDF sampling is the
  *             closed-form inverse CDF. */
 
 /* Random numbers: every sampler takes u in [0, 1] inclusive. 1 is read as
@@ -2550,7 +2611,7 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
 /* Visible normals as a smooth function of (u1, u2), for quadrature over the
  * unit square (albedo tables, LTC fits): the rejection samplers of GTR and
  * Student-t jump with (u1, u2), so those kinds take the exact numerical
- * inversion (07_numeric_vndf.h, microseconds) here; every other kind is
+ * inversion (05_numeric_vndf.h, microseconds) here; every other kind is
  * mf_sample_visible. */
 MF_INLINE mf_vec3 mf__sample_visible_smooth(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
@@ -4245,8 +4306,12 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  * mf_ltc_beckmann_fresnel and mf_ltc_beckmann_table (13_ltc.h). */
 #ifndef MF_NO_IBM
 /* ======================================================================== */
-/* == 15. Inverse Bin Map                                                   */
+/* == 15. Inverse Bin Map: overview, layout and the packed bit format       */
 /* ======================================================================== */
+/* The Inverse Bin Map in five modules: this one (the mf_ibm type, its
+ * packed layout, bins), 15_ibm_2_footprint.h (footprint geometry),
+ * 15_ibm_3_traverse.h (bin weights by kd traversal), 15_ibm_4_brdf.h (the
+ * filtered BRDF, pdf and sampling), 15_ibm_5_build.h (build, save, load). */
 /* Atanasov et al. 2021 (thesis ch. 5): the filtered BRDF of a normal map over a
  * pixel footprint A (Eq. 5.1-5.3) grouped by directional bins (binned BRDF,
  * Eq. 5.7-5.8), truncated to the 21 bins around the half vector's bin (Eq.
@@ -4254,8 +4319,8 @@ MF_INLINE mf_real mf_ltc_integrate_textured(const mf_ltc *l, const mf_vec3 *q, i
  * shadowing (texel contribution C, Eq. 3.29); bin weights from the Inverse Bin
  * Map (Eq. 5.15, 5.17) with node-level prefiltering; sampling and pdf Eq. 5.16. */
 
-/* Use: build once per normal map and flake roughness (mf_ibm_build, section
- * 14; about 0.05-0.13 s and 16-28 MB for a 2048^2 map), then per shading point
+/* Use: build once per normal map and flake roughness (mf_ibm_build,
+ * 15_ibm_5_build.h; about 0.05-0.13 s and 16-28 MB for a 2048^2 map), then per shading point
  * pass the pixel footprint in texture space (e.g. from ray differentials):
  *
  *     mf_ibm ibm;
@@ -4448,6 +4513,58 @@ MF_COLD int mf_ibm_texel_bin(const mf_ibm *ibm, int x, int y);
  * the Beckmann roughness of the map's RMS slopes (sqrt(2 E[s^2]) per axis). */
 MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
 
+/* bit length of v (0 for 0): one instruction where there is one, else by
+ * halving (no loop over the bits) */
+MF_INLINE int mf__ibm_bitlen32(unsigned int v)
+{
+#ifdef MF__CLZ32
+    return v ? 32 - MF__CLZ32(v) : 0;
+#else
+    int k = 0;
+    if (v >> 16) { k += 16; v >>= 16; }
+    if (v >> 8) { k += 8; v >>= 8; }
+    if (v >> 4) { k += 4; v >>= 4; }
+    if (v >> 2) { k += 2; v >>= 2; }
+    if (v >> 1) { k += 1; v >>= 1; }
+    return k + (int)v;
+#endif
+}
+
+/* stored kd-tree levels of a bin of n texels: floor(log2(2 n / MF_IBM_TREE_MIN)) (0 below it), within the tree's depth */
+MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
+{
+    int k = mf__ibm_bitlen32(n / (unsigned int)MF_IBM_TREE_MIN);
+    k = k < 24 ? k : 24;
+    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
+}
+
+/* the block length of a bin of n texels: n, or n + 2^k - 1 with the top k
+ * levels of its kd-tree (the inner boundaries of its level-k nodes) */
+MF_INLINE unsigned int mf__ibm_block_len(const mf_ibm *ibm, unsigned int n)
+{
+    return n < (unsigned int)MF_IBM_TREE_MIN ? n : n + (1u << mf__ibm_tree_levels(ibm, n)) - 1u;
+}
+
+/* The texel count of a bin whose block has length len: len = n + 2^k(n) - 1
+ * is strictly increasing in n; *k: the stored levels (0: none, len = n). */
+MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len, int *k)
+{
+    unsigned int n = len;
+    if (len < (unsigned int)MF_IBM_TREE_MIN) { *k = 0; return len; }
+    for (*k = mf__ibm_tree_levels(ibm, len); *k > 0; --*k) {
+        n = len + 1u - (1u << *k);
+        if (mf__ibm_tree_levels(ibm, n) == *k) return n;
+    }
+    return len;   /* none (not a valid block: mf_ibm_load rejects it) */
+}
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15b. Inverse Bin Map: footprints (periods, pieces, exact areas)       */
+/* ======================================================================== */
+/* A pixel footprint (mf_footprint) cut into the period cells of the tiled
+ * map and the convex pieces each texel or kd node is clipped against, with
+ * exact areas (closed form for one cutting edge, Green's theorem else). */
 /* ---- footprints: periods, pieces, exact areas ---- */
 
 #define MF__IBM_NONE 0     /* no texel (center not finite) */
@@ -4455,118 +4572,6 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d);
 #define MF__IBM_EXACT 2    /* full periods plus exact pieces */
 #define MF__IBM_GLOBAL 3   /* too many periods: the whole map's histogram */
 
-/* ---- bin weights: a window of bins around a center bin ---- */
-
-/* Fraction of the footprint's area whose texels fall in `bin` (texels are
- * constant squares; Eq. 5.3, 5.8). Exact (polygon clipping) for any
- * parallelogram, rectangles through a fast path, wrapping across the border.
- * Footprints covering whole periods count them from the bin sizes; if the
- * footprint's boundary cuts more than MF_IBM_MAX_PIECES period cells the
- * weight is that of the whole map (n_bin / N) - exact when the footprint is a
- * union of whole periods, otherwise off by at most the cut cells' share of
- * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
- * the bin of the texel at the center, else 0; non-finite center: 0.
- * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
- * two index reads a window row) returns before any footprint work, and so
- * does a bin of 128 or more whose stored kd-tree top has no texel near the
- * footprint, or bins of at most 48 texels in all none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
- * texels visit the box (its bin-map rows prefetched), reading each texel's
- * bin before clipping it, unless the wanted bins hold fewer than 2 times
- * the box's texels (then their kd-trees are traversed); larger ones
- * traverse the kd-trees, where a kd node that the footprint's edge cuts and
- * whose texels all lie in the bin (flat regions) counts its box's area in
- * the footprint without descending. Footprints of a few texels get their
- * texels' areas row by row (two clips per row, then each texel's column
- * by Green's theorem along the row's edges); a texel
- * (or node) cut by one footprint edge gets its area in closed form, by
- * more edges by Green's theorem. Bins that hold at most 48 texels each on
- * average, for a footprint whose texel box meets at most 3 periods each
- * way (across the border too), take their texels from their lists without a
- * traversal: a texel's center in the footprint's coordinates decides it
- * wholly inside or outside, and only texels that the boundary may cut are
- * clipped (where the footprint's box would be visited, only a single bin,
- * of at most 128, which also skips the early exits above). */
-MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
-
-/* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
- * ibm->radius: the 21 bins of Sec. 5.4.2 for r = 2) that hold texels, with
- * their weights, in one traversal. bins and weights must hold
- * MF_IBM_MAX_WINDOW entries; returns how many were written. */
-MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
-                                           mf_real *weights);
-
-/* ---- the filtered BRDF (Eq. 5.13), its pdf (Eq. 5.16) and sampling ---- */
-
-/* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
- * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
- * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
- * Truncated like Eq. 5.13 (measured truncation: docs/ACCURACY.md); for
- * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
- * the horizon and for degenerate input. */
-MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
-
-/* Density of mf_ibm_sample per unit solid angle of wi (Eq. 5.16 with the
- * visible-normal density of each bin's lobe): sum of W_j D_wo(h; t_j) /
- * (4 wo.h) over the same bins as mf_ibm_brdf. It integrates to 1 minus the
- * no-sample mass of mf_ibm_sample. */
-MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
-
-/* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
-MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
-
-/* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
- * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
- * of the flake Beckmann around t_j for wo; wi = reflect(wo, m). The zero vector
- * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
- * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
- * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
-MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
-                                mf_real u3, mf_real u4);
-
-/* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
-#define MF_IBM_MIN_CUT MF_R(0.1)
-/* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
- * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
- * normalized before binning), row-major, texel (x, y) at index y*width + x.
- * flake_alpha is the Beckmann flake roughness (clamped to [MF_ALPHA_MIN,
- * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
- * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
- * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
- * MF_IBM_MAX_RES. mf_ibm_build_ex also takes options (NULL or all-zero:
- * the defaults): the resolution b (0: Eq. 5.14) and the cut in sigmas (0: 3,
- * else in [MF_IBM_MIN_CUT, 10]: a cut that rounds to 0 in float would not
- * reload); the neighbourhood radius r grows with b so
- * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
- * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
- * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
- * sizes, alpha <= 0 or NaN, resolution or cut out of range
- * (MF_ERROR_INVALID_ARGUMENT); a NaN, non-unit or below-horizon normal
- * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
- * allocated on failure, and *ibm is zeroed. Cost: two passes over the
- * normals (binning in 8 x 8 tiles, then a counting sort in Morton order)
- * and the kd-tree tops (timings: docs/PERFORMANCE.md, `make bench`). */
-typedef struct mf_ibm_options {
-    int resolution;          /* bins per axis b; 0: Eq. 5.14 */
-    mf_real cut_sigmas;      /* the lobe's cut in sigmas; 0: 3 */
-} mf_ibm_options;
-MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
-MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
-                                const mf_ibm_options *options);
-MFDEF void mf_ibm_release(mf_ibm *ibm);
-/* Bytes held: the single integer array (ibm->words * 4). */
-MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
-/* Save and load (no stdio): mf_ibm_save writes the bytes the map needs to
- * *bytes and copies the integer array (native byte order) to buf when cap is
- * large enough. buf NULL: a size query (MF_SUCCESS); cap too small:
- * MF_ERROR_BUFFER_TOO_SMALL, nothing written; an empty map or NULL:
- * MF_ERROR_INVALID_ARGUMENT, *bytes = 0. mf_ibm_load copies such a buffer (any alignment) into
- * a new map after validating everything a query reads: magic, version, sizes,
- * a checksum, the index, every texel position (in range, sorted, each texel
- * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
- * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
- * mf_ibm_set_shadowing is not saved: set it again after loading. */
-MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes);
-MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 /* Area of the unit square where a linear function is >= 0, from its values
  * v[0..3] at the corners (0,0), (1,0), (1,1), (0,1): the triangle, trapezoid
  * or pentagon that one line cuts, each from crossing fractions v_i / (v_i -
@@ -4624,65 +4629,153 @@ MF_INLINE mf_real mf__ibm_green_area(const mf_real *x, const mf_real *y, int n, 
     if (cb && ct) s += W * mf_max(mf_clamp(vt, MF_R(0.0), H) - mf_clamp(vb, MF_R(0.0), H), MF_R(0.0));
     return mf_clamp(s, MF_R(0.0), W * H);
 }
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15c. Inverse Bin Map: bin weights (the kd-tree traversal)             */
+/* ======================================================================== */
+/* The weight of a bin, or of a window of bins, over a footprint (Eq. 5.3,
+ * 5.8, 5.15, 5.17): direct texel sums for small footprints, the kd-trees of
+ * the bins' texel lists for large ones, early exits for empty bins. */
+/* ---- bin weights: a window of bins around a center bin ---- */
 
-/* bit length of v (0 for 0): one instruction where there is one, else by
- * halving (no loop over the bits) */
-MF_INLINE int mf__ibm_bitlen32(unsigned int v)
-{
-#ifdef MF__CLZ32
-    return v ? 32 - MF__CLZ32(v) : 0;
-#else
-    int k = 0;
-    if (v >> 16) { k += 16; v >>= 16; }
-    if (v >> 8) { k += 8; v >>= 8; }
-    if (v >> 4) { k += 4; v >>= 4; }
-    if (v >> 2) { k += 2; v >>= 2; }
-    if (v >> 1) { k += 1; v >>= 1; }
-    return k + (int)v;
-#endif
-}
+/* Fraction of the footprint's area whose texels fall in `bin` (texels are
+ * constant squares; Eq. 5.3, 5.8). Exact (polygon clipping) for any
+ * parallelogram, rectangles through a fast path, wrapping across the border.
+ * Footprints covering whole periods count them from the bin sizes; if the
+ * footprint's boundary cuts more than MF_IBM_MAX_PIECES period cells the
+ * weight is that of the whole map (n_bin / N) - exact when the footprint is a
+ * union of whole periods, otherwise off by at most the cut cells' share of
+ * the area. Zero area (< MF_IBM_MIN_AREA texels) or a non-finite edge: 1 for
+ * the bin of the texel at the center, else 0; non-finite center: 0.
+ * Cost: an empty bin (or, for the queries below, an empty neighbourhood:
+ * two index reads a window row) returns before any footprint work, and so
+ * does a bin of 128 or more whose stored kd-tree top has no texel near the
+ * footprint, or bins of at most 48 texels in all none of which lies near it; footprints of up to MF_IBM_DIRECT_TEXELS bounding-box
+ * texels visit the box (its bin-map rows prefetched), reading each texel's
+ * bin before clipping it, unless the wanted bins hold fewer than 2 times
+ * the box's texels (then their kd-trees are traversed); larger ones
+ * traverse the kd-trees, where a kd node that the footprint's edge cuts and
+ * whose texels all lie in the bin (flat regions) counts its box's area in
+ * the footprint without descending. Footprints of a few texels get their
+ * texels' areas row by row (two clips per row, then each texel's column
+ * by Green's theorem along the row's edges); a texel
+ * (or node) cut by one footprint edge gets its area in closed form, by
+ * more edges by Green's theorem. Bins that hold at most 48 texels each on
+ * average, for a footprint whose texel box meets at most 3 periods each
+ * way (across the border too), take their texels from their lists without a
+ * traversal: a texel's center in the footprint's coordinates decides it
+ * wholly inside or outside, and only texels that the boundary may cut are
+ * clipped (where the footprint's box would be visited, only a single bin,
+ * of at most 128, which also skips the early exits above). */
+MF_COLD mf_real mf_ibm_bin_weight(const mf_ibm *ibm, int bin, const mf_footprint *f);
 
-/* stored kd-tree levels of a bin of n texels: floor(log2(2 n / MF_IBM_TREE_MIN)) (0 below it), within the tree's depth */
-MF_INLINE int mf__ibm_tree_levels(const mf_ibm *ibm, unsigned int n)
-{
-    int k = mf__ibm_bitlen32(n / (unsigned int)MF_IBM_TREE_MIN);
-    k = k < 24 ? k : 24;
-    return k < ibm->kx + ibm->ky ? k : ibm->kx + ibm->ky;
-}
+/* The neighbourhood of `center_bin` (bins with dx^2 + dy^2 <= r(r+1), r =
+ * ibm->radius: the 21 bins of Sec. 5.4.2 for r = 2) that hold texels, with
+ * their weights, in one traversal. bins and weights must hold
+ * MF_IBM_MAX_WINDOW entries; returns how many were written. */
+MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *f, int center_bin, int *bins,
+                                           mf_real *weights);
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15d. Inverse Bin Map: the filtered glint BRDF, its pdf, sampling      */
+/* ======================================================================== */
+/* The binned, truncated filtered BRDF of Eq. 5.13 over the bin weights of
+ * 15_ibm_3_traverse.h, each bin a Beckmann flake lobe around its mean
+ * normal; its pdf (Eq. 5.16) and the sampler whose density it is. */
+/* ---- the filtered BRDF (Eq. 5.13), its pdf (Eq. 5.16) and sampling ---- */
 
-/* the block length of a bin of n texels: n, or n + 2^k - 1 with the top k
- * levels of its kd-tree (the inner boundaries of its level-k nodes) */
-MF_INLINE unsigned int mf__ibm_block_len(const mf_ibm *ibm, unsigned int n)
-{
-    return n < (unsigned int)MF_IBM_TREE_MIN ? n : n + (1u << mf__ibm_tree_levels(ibm, n)) - 1u;
-}
+/* Filtered glint BRDF over the footprint (Eq. 5.13 with F = 1, no cosine):
+ * sum over the bins around the half vector's bin of W_j C(wo, wi, t_j). Each
+ * bin is represented by its mean normal t_j (mf_ibm_bin_normal). Reciprocal.
+ * Truncated like Eq. 5.13 (measured truncation: docs/ACCURACY.md); for
+ * small footprints the same sum is taken texel by texel (Eq. 5.2). 0 below
+ * the horizon and for degenerate input. */
+MF_COLD mf_real mf_ibm_brdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
 
-/* The texel count of a bin whose block has length len: len = n + 2^k(n) - 1
- * is strictly increasing in n; *k: the stored levels (0: none, len = n). */
-MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len, int *k)
-{
-    unsigned int n = len;
-    if (len < (unsigned int)MF_IBM_TREE_MIN) { *k = 0; return len; }
-    for (*k = mf__ibm_tree_levels(ibm, len); *k > 0; --*k) {
-        n = len + 1u - (1u << *k);
-        if (mf__ibm_tree_levels(ibm, n) == *k) return n;
-    }
-    return len;   /* none (not a valid block: mf_ibm_load rejects it) */
-}
+/* Density of mf_ibm_sample per unit solid angle of wi (Eq. 5.16 with the
+ * visible-normal density of each bin's lobe): sum of W_j D_wo(h; t_j) /
+ * (4 wo.h) over the same bins as mf_ibm_brdf. It integrates to 1 minus the
+ * no-sample mass of mf_ibm_sample. */
+MF_COLD mf_real mf_ibm_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi);
 
+/* mf_ibm_brdf and (in *pdf) mf_ibm_pdf from one weight query (MIS needs both). */
+MF_COLD mf_real mf_ibm_brdf_and_pdf(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_vec3 wi, mf_real *pdf);
+
+/* Samples wi (Sec. 5.4.3): (u1, u2) a point of the footprint, uniform by
+ * area, whose texel's bin j gives the normal t_j; (u3, u4) a visible normal m
+ * of the flake Beckmann around t_j for wo; wi = reflect(wo, m). The zero vector
+ * (no sample) when wo.t_j <= 0, wi is below the horizon, or the bin j is not
+ * in the neighbourhood of beta(h) that mf_ibm_pdf sums (the truncation of Eq.
+ * 5.13) - so the density of the returned wi is exactly mf_ibm_pdf. */
+MF_COLD mf_sample mf_ibm_sample(const mf_ibm *ibm, const mf_footprint *f, mf_vec3 wo, mf_real u1, mf_real u2,
+                                mf_real u3, mf_real u4);
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
+/* ======================================================================== */
+/* == 15e. Inverse Bin Map: build, save, load                               */
+/* ======================================================================== */
+/* The builder of the packed array of 15_ibm_1_format.h from a normal map,
+ * and its save and load (validated: a loaded map is safe to query). */
+/* ---- Inverse Bin Map: builder, queries, filtered BRDF ---- */
+#define MF_IBM_MIN_CUT MF_R(0.1)
+/* Builds the Inverse Bin Map of a normal map (Sec. 5.4): normals_xyz holds
+ * width*height unit normals (x, y, z; z > 0, length within 1e-3 of 1;
+ * normalized before binning), row-major, texel (x, y) at index y*width + x.
+ * flake_alpha is the Beckmann flake roughness (clamped to [MF_ALPHA_MIN,
+ * MF_ALPHA_MAX] and rounded to float, so that a saved map reloads
+ * bit-identically); the bin resolution is b = floor(5 / sin(theta0)),
+ * theta0 = atan(3 sigma), sigma = alpha / sqrt(2) (Eq. 5.14), at most
+ * MF_IBM_MAX_RES. mf_ibm_build_ex also takes options (NULL or all-zero:
+ * the defaults): the resolution b (0: Eq. 5.14) and the cut in sigmas (0: 3,
+ * else in [MF_IBM_MIN_CUT, 10]: a cut that rounds to 0 in float would not
+ * reload); the neighbourhood radius r grows with b so
+ * that the bins around h cover the cut cone: r = max(2, ceil(b sin(theta0)/2
+ * - 1/2)), at most MF_IBM_MAX_RADIUS (r = 2, the 21 bins, at the default b).
+ * width and height in [1, 16384]; powers of two build fastest. Errors: NULL,
+ * sizes, alpha <= 0 or NaN, resolution or cut out of range
+ * (MF_ERROR_INVALID_ARGUMENT); a NaN, non-unit or below-horizon normal
+ * (MF_ERROR_INVALID_DATA); allocation (MF_ERROR_OUT_OF_MEMORY). Nothing stays
+ * allocated on failure, and *ibm is zeroed. Cost: two passes over the
+ * normals (binning in 8 x 8 tiles, then a counting sort in Morton order)
+ * and the kd-tree tops (timings: docs/PERFORMANCE.md, `make bench`). */
+typedef struct mf_ibm_options {
+    int resolution;          /* bins per axis b; 0: Eq. 5.14 */
+    mf_real cut_sigmas;      /* the lobe's cut in sigmas; 0: 3 */
+} mf_ibm_options;
+MFDEF mf_result mf_ibm_build(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha);
+MFDEF mf_result mf_ibm_build_ex(mf_ibm *ibm, const mf_real *normals_xyz, int width, int height, mf_real flake_alpha,
+                                const mf_ibm_options *options);
+MFDEF void mf_ibm_release(mf_ibm *ibm);
+/* Bytes held: the single integer array (ibm->words * 4). */
+MFDEF size_t mf_ibm_memory_bytes(const mf_ibm *ibm);
+/* Save and load (no stdio): mf_ibm_save writes the bytes the map needs to
+ * *bytes and copies the integer array (native byte order) to buf when cap is
+ * large enough. buf NULL: a size query (MF_SUCCESS); cap too small:
+ * MF_ERROR_BUFFER_TOO_SMALL, nothing written; an empty map or NULL:
+ * MF_ERROR_INVALID_ARGUMENT, *bytes = 0. mf_ibm_load copies such a buffer (any alignment) into
+ * a new map after validating everything a query reads: magic, version, sizes,
+ * a checksum, the index, every texel position (in range, sorted, each texel
+ * exactly once, in the bin the bin map gives it) and the bin map; a corrupted
+ * or foreign buffer gives MF_ERROR_INVALID_DATA and nothing allocated.
+ * mf_ibm_set_shadowing is not saved: set it again after loading. */
+MFDEF mf_result mf_ibm_save(const mf_ibm *ibm, void *buf, size_t cap, size_t *bytes);
+MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes);
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
 /* ======================================================================== */
-/* == 16. Microsurface generation and a virtual gonioreflectometer          */
+/* == 16. Microsurface generation                                           */
 /* ======================================================================== */
 /* Ribardiere, Bringier, Meneveaux, Simonot 2019, "Microfacet BSDFs Generated
  * from NDFs and Explicit Microgeometry", Sec. 2 and 4: periodic height fields
  * whose normals follow any mf_ndf (Algorithm 1: slopes Q_m sampled from D,
  * Schwarz error Eq. 19, least-squares integration Eq. 20-21 with the discrete
- * derivatives of Eq. 22, re-matching), and a virtual gonioreflectometer that
- * traces them. Everything is in the implementation section (no inline part). */
+ * derivatives of Eq. 22, re-matching); the virtual gonioreflectometer that
+ * traces them is 16_microsurface_gonio.h. Everything is in the implementation
+ * section (no inline part). */
 
-/* ---- Microsurface generation and the virtual gonioreflectometer ---- */
+/* ---- Microsurface generation ---- */
 /* mf_microsurface_generate (Ribardiere et al. 2019, Algorithm 1): a periodic
  * size x size height field whose normals follow d. Row-major (x along a row,
  * y down the rows), heights in units of the grid spacing, mean 0: the central
@@ -4706,16 +4799,6 @@ MF_INLINE unsigned int mf__ibm_block_texels(const mf_ibm *ibm, unsigned int len,
  * non-zero mean slope is rejected. Errors: NULL pointers, bad size, negative
  * iterations or more than MF_MICROSURFACE_MAX_ITERATIONS, an invalid distribution (MF_ERROR_INVALID_ARGUMENT); allocation
  * (MF_ERROR_OUT_OF_MEMORY); nothing stays allocated on failure. */
-/* 64-bit seeds: unsigned long long (C99, C++11; C++98 compilers accept it
- * as an extension, quietly here) */
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wlong-long"
-#endif
-typedef unsigned long long mf_u64;
-#if defined(__GNUC__) || defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
 #define MF_MICROSURFACE_MIN_SIZE 8
 #define MF_MICROSURFACE_MAX_SIZE 4096
 #define MF_MICROSURFACE_THRESHOLD MF_R(0.02)
@@ -4765,10 +4848,15 @@ MFDEF mf_result mf_microsurface_generate_ex(const mf_ndf *d, int size, int itera
  * generator; non-finite input: MF_ERROR_INVALID_DATA. */
 MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size, mf_real *heights);
 
+#endif /* MF_NO_MICROSURFACE */
+#ifndef MF_NO_MICROSURFACE
+/* ======================================================================== */
+/* == 16b. A virtual gonioreflectometer                                     */
+/* ======================================================================== */
 /* The virtual gonioreflectometer (Ribardiere et al. 2019, Sec. 2): a
  * collimated beam from wi lights a periodic height field (heights in units of
- * the grid spacing, as above) traced as a triangle mesh with mirror or
- * Lambertian facets; every bounce is followed and the light leaving the
+ * the grid spacing, as mf_microsurface_generate makes them) traced as a
+ * triangle mesh with mirror or Lambertian facets; every bounce is followed and the light leaving the
  * surface is recorded in a hemispherical sensor of equal-solid-angle cells
  * (rings of equal area whose sector counts keep the cells near square,
  * after Beckers and Beckers 2012), separately for the first bounce and for
@@ -5521,7 +5609,6 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
     MF__SOLVER_DONE(MF__SITE_PHI_COS, i, 60);
     return sgn * phi;
 }
-
 /* 8-point Gauss-Legendre rule: nodes xi on [-1, 1], weights normalized to sum 1. */
 #define MF__GL_N 8
 MF_INLINE mf_real mf__gl_xi(int i)
@@ -5570,94 +5657,199 @@ MF_INLINE void mf__legendre(mf_real x, mf_real *p)
     for (n = 1; n < MF__GL_N; ++n)
         p[n + 1] = ((mf_real)(2 * n + 1) * x * p[n] - (mf_real)n * p[n - 1]) / (mf_real)(n + 1);
 }
-#define MF__NDF_CASE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
-#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
-#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
-#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
-MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_D)
-    default: return MF_R(0.0);
-    }
-}
-MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_LAMBDA)
-    default: return MF_R(0.0);
-    }
-}
-MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_D)
-    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    }
-}
-MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_VISIBLE)
-    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    }
-}
-#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
-MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_PREP)
-    default: return d;
-    }
-}
-#undef MF__NDF_CASE_PREP
-#undef MF__NDF_CASE_D
-#undef MF__NDF_CASE_LAMBDA
-#undef MF__NDF_CASE_SAMPLE_D
-#undef MF__NDF_CASE_SAMPLE_VISIBLE
 
-/* The NDF-cos CDF inversion of the kinds of ISO > 0 (07_numeric_vndf.h): tan^2
+/* the most nodes mf__gauss_jacobi takes (the GTR mixture's MF__GTR_NQ) */
+#define MF__GJ_MAX 24
+/* n-point Gauss-Jacobi rule (n <= MF__GJ_MAX) for the weight (1-x)^ea (1+x)^eb
+ * on [-1, 1] by Golub and Welsch (1969): nodes are the eigenvalues of the
+ * Jacobi matrix of the polynomials' recurrence, weights the squared first
+ * components of its unit eigenvectors (unnormalized: the caller normalizes).
+ * Implicit QL with Wilkinson shifts, at most 60 sweeps per eigenvalue. In
+ * double in every build: float nodes would move b = exp(y) by 2e-6 at alpha
+ * 1e-4. */
+MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *w)
+{
+    double e[MF__GJ_MAX];
+    int i, l, m, it;
+    for (i = 0; i < n; ++i) {
+        double s = 2.0 * i + ea + eb, k = i + 1.0, t = 2.0 * k + ea + eb;
+        x[i] = i == 0 ? (eb - ea) / (ea + eb + 2.0) : (eb - ea) * (eb + ea) / (s * (s + 2.0));
+        e[i] = i + 1 < n ? sqrt(4.0 * k * (k + ea) * (k + eb) * (k + ea + eb) /
+                                   (t * t * (t + 1.0) * (t - 1.0))) : 0.0;
+        w[i] = i == 0 ? 1.0 : 0.0;   /* first row of the eigenvector matrix */
+    }
+    for (l = 0; l < n; ++l) {
+        for (it = 0; it < 60; ++it) {
+            double g, r, s, c, pp, f, bb;
+            for (m = l; m < n - 1; ++m)
+                if (fabs(e[m]) <= 2.220446049250313e-16 * (fabs(x[m]) + fabs(x[m + 1]))) break;
+            if (m == l) break;
+            g = (x[l + 1] - x[l]) / (2.0 * e[l]);
+            r = sqrt(g * g + 1.0);
+            g = x[m] - x[l] + e[l] / (g + (g >= 0.0 ? r : -r));
+            s = c = 1.0; pp = 0.0;
+            for (i = m - 1; i >= l; --i) {
+                f = s * e[i]; bb = c * e[i];
+                r = sqrt(f * f + g * g); e[i + 1] = r;
+                if (r == 0.0) { x[i + 1] -= pp; e[m] = 0.0; break; }
+                s = f / r; c = g / r; g = x[i + 1] - pp;
+                r = (x[i] - g) * s + 2.0 * c * bb;
+                pp = s * r; x[i + 1] = g + pp; g = c * r - bb;
+                f = w[i + 1]; w[i + 1] = s * w[i] + c * f; w[i] = c * w[i] - s * f;
+            }
+            if (r == 0.0 && i >= l) continue;
+            x[l] -= pp; e[l] = g; e[m] = 0.0;
+        }
+    }
+    for (i = 0; i < n; ++i) w[i] *= w[i];
+}
+/* The NDF-cos CDF inversion of the kinds of ISO > 0 (05_numeric_vndf.h): tan^2
  * at mass t from the pole (q = 1 - t beyond), the mass beyond tan2, and the
- * exponent p of the sampler's substitution; unknown kinds give 0, 0 and 4. */
-#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
-#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
-#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
-MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_TAN2)
-    default: return MF_R(0.0);
-    }
-}
-MF_INLINE mf_real mf__ndf_iso_tail(const mf_ndf *d, mf_real tan2)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_TAIL)
-    default: return MF_R(0.0);
-    }
-}
-MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_VNDF_P)
-    default: return MF_R(4.0);
-    }
-}
-#undef MF__NDF_CASE_TAN2
-#undef MF__NDF_CASE_TAIL
-#undef MF__NDF_CASE_VNDF_P
+ * exponent p of the sampler's substitution; unknown kinds give 0, 0 and 4.
+ * Defined with the dispatch (07_ndf_dispatch.h), after the kinds. */
+MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q);
+MF_INLINE mf_real mf__ndf_iso_tail(const mf_ndf *d, mf_real tan2);
+MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d);
+/* The NDF-CDF inversion of an isotropic kind sampled numerically (trait ISO
+ * of 05_ndf.h; GTR with its alpha, Student-t with unit roughness, stretched
+ * by the caller): t is the D-cos mass from the pole (theta = 0) to theta, q =
+ * 1 - t the mass beyond; both are passed so each end stays accurate. Returns
+ * tan^2(theta). */
+MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q) { return mf__ndf_iso_tan2(d, t, q); }
+/* Mass of D cos beyond the polar angle whose tan^2 is tan2 (inverse of the above). */
+MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2) { return mf__ndf_iso_tail(d, tan2); }
+/* Exponent p of the substitution q = qc (1 - s^2)^p: it must cancel the tail
+ * tan(theta) ~ q^-beta (GTR: beta = 1/2 at every gamma; Student-t:
+ * beta = 1/(2 gamma - 2)), p = 2 / (1 - beta). */
+MF_INLINE mf_real mf__iso_p(const mf_ndf *d) { return mf__ndf_iso_p(d); }
 
-/* The member (alpha, gamma) of the family of kind `kind` (LTC 1) in *out, 1;
- * 0 for any other kind (out untouched). */
-#define MF__NDF_CASE_FAMILY(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(case MF_NDF_##N: *out = mf__##n##_family(alpha, gamma); return 1;)
-MF_INLINE int mf__ndf_family(int kind, mf_real alpha, mf_real gamma, mf_ndf *out)
+/* State of the numerical VNDF sampler for one view (see mf__iso_sample_visible). */
+typedef struct mf__iso_vis {
+    const mf_ndf *d;
+    mf_real tv;        /* tan(theta_v) */
+    mf_real tc, qc;    /* D-cos mass inside / beyond theta_c = pi/2 - theta_v */
+} mf__iso_vis;
+
+/* Visible-normal weight over the D-cos CDF coordinate beyond theta_c, in the
+ * variable s in [0,1] with q = qc (1 - s^2)^p: per unit of D-cos mass, D_w
+ * integrated over phi is cos(theta_v) psi(theta), psi = (phi0 + sqrt(T^2-1))/pi,
+ * T = tan(theta_v) tan(theta), phi0 = acos(-1/T) (psi = 1 for T <= 1); this
+ * returns psi dt/ds. The substitution makes it smooth at both ends: ~s^3 at
+ * theta_c, and tan(theta) ~ q^-beta is cancelled at the horizon. */
+MF_INLINE mf_real mf__iso_vis_h(const mf__iso_vis *v, mf_real s, mf_real *t_out, mf_real *q_out)
 {
-    switch (kind) {
-    MF__NDF_KINDS(MF__NDF_CASE_FAMILY)
-    default: return 0;
+    const mf_ndf *d = v->d;
+    mf_real p = mf__iso_p(d), s2 = s * s, l = MF_LOG1P(-s2);
+    mf_real q = v->qc * MF_EXP(p * l), t = v->tc - v->qc * MF_EXPM1(p * l);   /* each accurate at its end */
+    mf_real T2, psi = MF_R(1.0);
+    *t_out = t; *q_out = q;
+    if (!(q > MF_R(0.0)) || !(s2 < MF_R(1.0))) return MF_R(0.0);
+    T2 = v->tv * v->tv * mf__iso_tan2(d, t, q);
+    if (T2 > MF_R(1.0)) {
+        mf_real T = MF_SQRT(T2);
+        psi = (MF_ACOS(-MF_R(1.0) / T) + MF_SQRT(T2 - MF_R(1.0))) * MF_INV_PI;
     }
+    /* -dq/ds = p q 2 s / (1 - s^2) */
+    return psi * p * q * MF_R(2.0) * s / (MF_R(1.0) - s2);
 }
-#undef MF__NDF_CASE_FAMILY
+
+/* Exact visible-normal sampling for an isotropic distribution known through its
+ * NDF-sampling CDF (mf__iso_tan2 / mf__iso_tail). The visible density over
+ * (D-cos mass t, phi) factors into a marginal in t and phi given t:
+ *   - inside theta_c = pi/2 - theta_v every azimuth faces the viewer and the
+ *     marginal is the constant cos(theta_v): t is linear there (analytic);
+ *   - beyond it the marginal cos(theta_v) psi is integrated on 8 panels (4 in
+ *     float builds) of 8 Gauss-Legendre nodes: 64 (32) evaluations, relative
+ *     error of the total measured below 2e-6 (6e-6) over GTR and Student-t
+ *     parameters, typically 1e-9 (1e-7); inside the chosen panel the CDF of the Legendre
+ *     interpolant through the same nodes is inverted by safeguarded Newton, so
+ *     no further evaluation is needed;
+ *   - phi given theta has density max(0, cot(theta_v) cot(theta) + cos(phi)).
+ * cv, sv: cos and sin of the view's polar angle, the view along +x. Returns wm
+ * in that frame. */
+#ifdef MF_USE_DOUBLE
+#define MF__ISO_PANELS 8   /* total mass to ~1e-8 relative */
+#else
+#define MF__ISO_PANELS 4   /* total mass to ~1e-5 relative, below float's sampling resolution */
+#endif
+MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv, mf_real u1, mf_real u2)
+{
+    mf_real hv[MF__ISO_PANELS][MF__GL_N], cum[MF__ISO_PANELS + 1];
+    mf_real target, t, q, tan2, cphi, c2, ct, st, phi, tan2c;
+    mf__iso_vis v;
+    int k, i;
+    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
+    if (!(sv > MF_R(1e-7) * cv)) {            /* normal incidence: the NDF-cos sampler */
+        tan2 = mf__iso_tan2(d, u1, MF_R(1.0) - u1);
+        cphi = MF_R(1e30);
+    } else {
+        v.d = d;
+        v.tv = sv / mf_max(cv, MF_R(1e-30));
+        tan2c = cv / sv; tan2c *= tan2c;
+        v.qc = mf__iso_tail(d, tan2c);
+        v.tc = MF_R(1.0) - v.qc;
+        cum[0] = v.tc;                        /* masses in units of cos(theta_v) */
+        for (k = 0; k < MF__ISO_PANELS; ++k) {
+            mf_real sum = MF_R(0.0);
+            for (i = 0; i < MF__GL_N; ++i) {
+                mf_real s = mf__gl_node01(k, i, MF__ISO_PANELS);
+                hv[k][i] = mf__iso_vis_h(&v, s, &t, &q);
+                sum += mf__gl_w(i) * hv[k][i];
+            }
+            cum[k + 1] = cum[k] + sum / (mf_real)MF__ISO_PANELS;
+        }
+        target = u1 * cum[MF__ISO_PANELS];
+        if (target <= v.tc) {
+            t = target;
+            q = MF_R(1.0) - t;
+        } else {
+            mf_real a[MF__GL_N], P[MF__GL_N + 1], lo = MF_R(-1.0), hi = MF_R(1.0), x, rem, width;
+            int n;
+            for (k = 0; k < MF__ISO_PANELS - 1 && cum[k + 1] < target; ++k) {}
+            width = MF_R(1.0) / (mf_real)MF__ISO_PANELS;
+            rem = (target - cum[k]) / width;     /* in units of the panel's own variable */
+            /* Legendre coefficients of the interpolant: a_n = (2n+1) sum_i w_i h_i P_n(xi_i) */
+            for (n = 0; n < MF__GL_N; ++n) a[n] = MF_R(0.0);
+            for (i = 0; i < MF__GL_N; ++i) {
+                mf__legendre(mf__gl_xi(i), P);
+                for (n = 0; n < MF__GL_N; ++n) a[n] += mf__gl_w(i) * hv[k][i] * P[n];
+            }
+            for (n = 0; n < MF__GL_N; ++n) a[n] *= (mf_real)(2 * n + 1);
+            x = MF_R(2.0) * mf_clamp(rem / mf_max((cum[k + 1] - cum[k]) / width, MF_R(1e-30)), MF_R(0.0), MF_R(1.0)) - MF_R(1.0);
+            for (i = 0; i < 50; ++i) {
+                /* F(x) = integral over [-1, x] of the interpolant / 2; F' = h(x) / 2 */
+                mf_real F, dF = MF_R(0.0);
+                mf__legendre(x, P);
+                F = a[0] * (x + MF_R(1.0));
+                for (n = 1; n < MF__GL_N; ++n) F += a[n] * (P[n + 1] - P[n - 1]) / (mf_real)(2 * n + 1);
+                for (n = 0; n < MF__GL_N; ++n) dF += a[n] * P[n];
+                if (mf__newton_step(&x, MF_R(0.5) * F - rem, MF_R(0.5) * dF, &lo, &hi, MF_R(8.0) * MF_EPS)) break;
+            }
+            MF__SOLVER_DONE(MF__SITE_NUM_VNDF, i, 50);
+            mf__iso_vis_h(&v, ((mf_real)k + MF_R(0.5) + MF_R(0.5) * x) * width, &t, &q);
+        }
+        tan2 = mf__iso_tan2(d, t, q);
+        /* phi | theta: max(0, cv cos(theta) + sv sin(theta) cos(phi)) -> c = 1/(tv tan) */
+        cphi = tan2 > MF_R(0.0) ? MF_R(1.0) / (v.tv * MF_SQRT(tan2)) : MF_R(1e30);
+    }
+    /* the heaviest tails put visible mass beyond tan = 1e15 (Student-t gamma
+     * 1.55: ~10%): those normals keep tan = 1e15, so none is horizontal (z = 0,
+     * density 0); every reflection about them points below the horizon anyway */
+    tan2 = mf_min(tan2, MF_R(1e30));
+    c2 = MF_R(1.0) / (MF_R(1.0) + tan2); ct = MF_SQRT(c2); st = MF_SQRT(tan2) * ct;
+    phi = mf__sample_phi_cos(cphi, u2);
+    return mf_vec3_make(st * MF_COS(phi), st * MF_SIN(phi), ct);
+}
+
+MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    mf_real cv, sv, cp, sp;
+    mf_vec3 m;
+    if (w.z < MF_R(0.0) || !mf__ndf_iso(d->type)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
+    m = mf__iso_sample_visible(d, cv, sv, u1, u2);
+    return mf_normalize(mf_vec3_make(ax * (cp * m.x - sp * m.y), ay * (sp * m.x + cp * m.y), m.z));
+}
 /* Beckmann visible slopes for unit roughness and view tan(theta) = tv (view
  * along +x): the slope x along the view has density ~ max(0, 1 - tv x) exp(-x^2),
  * G(x) = erfc(-x)/2 + tv exp(-x^2)/(2 sqrt(pi)) (Heitz & d'Eon 2014 Eq. 9 up to
@@ -5939,49 +6131,6 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
     }
 }
 
-/* Gauss-Jacobi rule for the weight (1-x)^ea (1+x)^eb on [-1, 1] by Golub and
- * Welsch (1969): nodes are the eigenvalues of the Jacobi matrix of the
- * polynomials' recurrence, weights the squared first components of its unit
- * eigenvectors (unnormalized: the caller normalizes). Implicit QL with Wilkinson
- * shifts, at most 60 sweeps per eigenvalue. In double in every build: float
- * nodes would move b = exp(y) by 2e-6 at alpha 1e-4. */
-MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *w)
-{
-    double e[MF__GTR_NQ];
-    int i, l, m, it;
-    for (i = 0; i < n; ++i) {
-        double s = 2.0 * i + ea + eb, k = i + 1.0, t = 2.0 * k + ea + eb;
-        x[i] = i == 0 ? (eb - ea) / (ea + eb + 2.0) : (eb - ea) * (eb + ea) / (s * (s + 2.0));
-        e[i] = i + 1 < n ? sqrt(4.0 * k * (k + ea) * (k + eb) * (k + ea + eb) /
-                                   (t * t * (t + 1.0) * (t - 1.0))) : 0.0;
-        w[i] = i == 0 ? 1.0 : 0.0;   /* first row of the eigenvector matrix */
-    }
-    for (l = 0; l < n; ++l) {
-        for (it = 0; it < 60; ++it) {
-            double g, r, s, c, pp, f, bb;
-            for (m = l; m < n - 1; ++m)
-                if (fabs(e[m]) <= 2.220446049250313e-16 * (fabs(x[m]) + fabs(x[m + 1]))) break;
-            if (m == l) break;
-            g = (x[l + 1] - x[l]) / (2.0 * e[l]);
-            r = sqrt(g * g + 1.0);
-            g = x[m] - x[l] + e[l] / (g + (g >= 0.0 ? r : -r));
-            s = c = 1.0; pp = 0.0;
-            for (i = m - 1; i >= l; --i) {
-                f = s * e[i]; bb = c * e[i];
-                r = sqrt(f * f + g * g); e[i + 1] = r;
-                if (r == 0.0) { x[i + 1] -= pp; e[m] = 0.0; break; }
-                s = f / r; c = g / r; g = x[i + 1] - pp;
-                r = (x[i] - g) * s + 2.0 * c * bb;
-                pp = s * r; x[i + 1] = g + pp; g = c * r - bb;
-                f = w[i + 1]; w[i + 1] = s * w[i] + c * f; w[i] = c * w[i] - s * f;
-            }
-            if (r == 0.0 && i >= l) continue;
-            x[l] -= pp; e[l] = g; e[m] = 0.0;
-        }
-    }
-    for (i = 0; i < n; ++i) w[i] *= w[i];
-}
-
 /* The mixture rule of mf__gtr_lambda for gamma and alpha a (see there) into
  * t->nq, qb, qw, built in double in every build. With
  * u = y - log a^2, the smooth factor is, in logs,
@@ -6162,7 +6311,7 @@ MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19])
  * Normals facing away from w (float rounding at the cap's edge) are drawn
  * again. The first proposal uses (u1, u2), further draws the stream of
  * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
- * numerical inversion of 07_numeric_vndf.h answers. */
+ * numerical inversion of 05_numeric_vndf.h answers. */
 MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real q = MF_R(1.0) - u1;
@@ -6493,7 +6642,7 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
  *   that b.
  * Further draws come from mf__stream_next; after 64 rejections (probability
- * below 1e-10) the exact numerical inversion of 07_numeric_vndf.h answers. */
+ * below 1e-10) the exact numerical inversion of 05_numeric_vndf.h answers. */
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), ax = d->ax, ay = d->ay;
@@ -6945,146 +7094,95 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
      * and atan2 must give the D lookup an angle below the last node */
     return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(8.0) * MF_EPS)));
 }
-/* The NDF-CDF inversion of an isotropic kind sampled numerically (trait ISO
- * of 05_ndf.h; GTR with its alpha, Student-t with unit roughness, stretched
- * by the caller): t is the D-cos mass from the pole (theta = 0) to theta, q =
- * 1 - t the mass beyond; both are passed so each end stays accurate. Returns
- * tan^2(theta). */
-MF_INLINE mf_real mf__iso_tan2(const mf_ndf *d, mf_real t, mf_real q) { return mf__ndf_iso_tan2(d, t, q); }
-/* Mass of D cos beyond the polar angle whose tan^2 is tan2 (inverse of the above). */
-MF_INLINE mf_real mf__iso_tail(const mf_ndf *d, mf_real tan2) { return mf__ndf_iso_tail(d, tan2); }
-/* Exponent p of the substitution q = qc (1 - s^2)^p: it must cancel the tail
- * tan(theta) ~ q^-beta (GTR: beta = 1/2 at every gamma; Student-t:
- * beta = 1/(2 gamma - 2)), p = 2 / (1 - beta). */
-MF_INLINE mf_real mf__iso_p(const mf_ndf *d) { return mf__ndf_iso_p(d); }
-
-/* State of the numerical VNDF sampler for one view (see mf__iso_sample_visible). */
-typedef struct mf__iso_vis {
-    const mf_ndf *d;
-    mf_real tv;        /* tan(theta_v) */
-    mf_real tc, qc;    /* D-cos mass inside / beyond theta_c = pi/2 - theta_v */
-} mf__iso_vis;
-
-/* Visible-normal weight over the D-cos CDF coordinate beyond theta_c, in the
- * variable s in [0,1] with q = qc (1 - s^2)^p: per unit of D-cos mass, D_w
- * integrated over phi is cos(theta_v) psi(theta), psi = (phi0 + sqrt(T^2-1))/pi,
- * T = tan(theta_v) tan(theta), phi0 = acos(-1/T) (psi = 1 for T <= 1); this
- * returns psi dt/ds. The substitution makes it smooth at both ends: ~s^3 at
- * theta_c, and tan(theta) ~ q^-beta is cancelled at the horizon. */
-MF_INLINE mf_real mf__iso_vis_h(const mf__iso_vis *v, mf_real s, mf_real *t_out, mf_real *q_out)
+#define MF__NDF_CASE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
+#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
+#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
+#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
+MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
 {
-    const mf_ndf *d = v->d;
-    mf_real p = mf__iso_p(d), s2 = s * s, l = MF_LOG1P(-s2);
-    mf_real q = v->qc * MF_EXP(p * l), t = v->tc - v->qc * MF_EXPM1(p * l);   /* each accurate at its end */
-    mf_real T2, psi = MF_R(1.0);
-    *t_out = t; *q_out = q;
-    if (!(q > MF_R(0.0)) || !(s2 < MF_R(1.0))) return MF_R(0.0);
-    T2 = v->tv * v->tv * mf__iso_tan2(d, t, q);
-    if (T2 > MF_R(1.0)) {
-        mf_real T = MF_SQRT(T2);
-        psi = (MF_ACOS(-MF_R(1.0) / T) + MF_SQRT(T2 - MF_R(1.0))) * MF_INV_PI;
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_D)
+    default: return MF_R(0.0);
     }
-    /* -dq/ds = p q 2 s / (1 - s^2) */
-    return psi * p * q * MF_R(2.0) * s / (MF_R(1.0) - s2);
 }
-
-/* Exact visible-normal sampling for an isotropic distribution known through its
- * NDF-sampling CDF (mf__iso_tan2 / mf__iso_tail). The visible density over
- * (D-cos mass t, phi) factors into a marginal in t and phi given t:
- *   - inside theta_c = pi/2 - theta_v every azimuth faces the viewer and the
- *     marginal is the constant cos(theta_v): t is linear there (analytic);
- *   - beyond it the marginal cos(theta_v) psi is integrated on 8 panels (4 in
- *     float builds) of 8 Gauss-Legendre nodes: 64 (32) evaluations, relative
- *     error of the total measured below 2e-6 (6e-6) over GTR and Student-t
- *     parameters, typically 1e-9 (1e-7); inside the chosen panel the CDF of the Legendre
- *     interpolant through the same nodes is inverted by safeguarded Newton, so
- *     no further evaluation is needed;
- *   - phi given theta has density max(0, cot(theta_v) cot(theta) + cos(phi)).
- * cv, sv: cos and sin of the view's polar angle, the view along +x. Returns wm
- * in that frame. */
-#ifdef MF_USE_DOUBLE
-#define MF__ISO_PANELS 8   /* total mass to ~1e-8 relative */
-#else
-#define MF__ISO_PANELS 4   /* total mass to ~1e-5 relative, below float's sampling resolution */
-#endif
-MF_INLINE mf_vec3 mf__iso_sample_visible(const mf_ndf *d, mf_real cv, mf_real sv, mf_real u1, mf_real u2)
+MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w)
 {
-    mf_real hv[MF__ISO_PANELS][MF__GL_N], cum[MF__ISO_PANELS + 1];
-    mf_real target, t, q, tan2, cphi, c2, ct, st, phi, tan2c;
-    mf__iso_vis v;
-    int k, i;
-    u1 = mf_clamp(u1, MF_R(0.0), MF_R(1.0));
-    if (!(sv > MF_R(1e-7) * cv)) {            /* normal incidence: the NDF-cos sampler */
-        tan2 = mf__iso_tan2(d, u1, MF_R(1.0) - u1);
-        cphi = MF_R(1e30);
-    } else {
-        v.d = d;
-        v.tv = sv / mf_max(cv, MF_R(1e-30));
-        tan2c = cv / sv; tan2c *= tan2c;
-        v.qc = mf__iso_tail(d, tan2c);
-        v.tc = MF_R(1.0) - v.qc;
-        cum[0] = v.tc;                        /* masses in units of cos(theta_v) */
-        for (k = 0; k < MF__ISO_PANELS; ++k) {
-            mf_real sum = MF_R(0.0);
-            for (i = 0; i < MF__GL_N; ++i) {
-                mf_real s = mf__gl_node01(k, i, MF__ISO_PANELS);
-                hv[k][i] = mf__iso_vis_h(&v, s, &t, &q);
-                sum += mf__gl_w(i) * hv[k][i];
-            }
-            cum[k + 1] = cum[k] + sum / (mf_real)MF__ISO_PANELS;
-        }
-        target = u1 * cum[MF__ISO_PANELS];
-        if (target <= v.tc) {
-            t = target;
-            q = MF_R(1.0) - t;
-        } else {
-            mf_real a[MF__GL_N], P[MF__GL_N + 1], lo = MF_R(-1.0), hi = MF_R(1.0), x, rem, width;
-            int n;
-            for (k = 0; k < MF__ISO_PANELS - 1 && cum[k + 1] < target; ++k) {}
-            width = MF_R(1.0) / (mf_real)MF__ISO_PANELS;
-            rem = (target - cum[k]) / width;     /* in units of the panel's own variable */
-            /* Legendre coefficients of the interpolant: a_n = (2n+1) sum_i w_i h_i P_n(xi_i) */
-            for (n = 0; n < MF__GL_N; ++n) a[n] = MF_R(0.0);
-            for (i = 0; i < MF__GL_N; ++i) {
-                mf__legendre(mf__gl_xi(i), P);
-                for (n = 0; n < MF__GL_N; ++n) a[n] += mf__gl_w(i) * hv[k][i] * P[n];
-            }
-            for (n = 0; n < MF__GL_N; ++n) a[n] *= (mf_real)(2 * n + 1);
-            x = MF_R(2.0) * mf_clamp(rem / mf_max((cum[k + 1] - cum[k]) / width, MF_R(1e-30)), MF_R(0.0), MF_R(1.0)) - MF_R(1.0);
-            for (i = 0; i < 50; ++i) {
-                /* F(x) = integral over [-1, x] of the interpolant / 2; F' = h(x) / 2 */
-                mf_real F, dF = MF_R(0.0);
-                mf__legendre(x, P);
-                F = a[0] * (x + MF_R(1.0));
-                for (n = 1; n < MF__GL_N; ++n) F += a[n] * (P[n + 1] - P[n - 1]) / (mf_real)(2 * n + 1);
-                for (n = 0; n < MF__GL_N; ++n) dF += a[n] * P[n];
-                if (mf__newton_step(&x, MF_R(0.5) * F - rem, MF_R(0.5) * dF, &lo, &hi, MF_R(8.0) * MF_EPS)) break;
-            }
-            MF__SOLVER_DONE(MF__SITE_NUM_VNDF, i, 50);
-            mf__iso_vis_h(&v, ((mf_real)k + MF_R(0.5) + MF_R(0.5) * x) * width, &t, &q);
-        }
-        tan2 = mf__iso_tan2(d, t, q);
-        /* phi | theta: max(0, cv cos(theta) + sv sin(theta) cos(phi)) -> c = 1/(tv tan) */
-        cphi = tan2 > MF_R(0.0) ? MF_R(1.0) / (v.tv * MF_SQRT(tan2)) : MF_R(1e30);
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_LAMBDA)
+    default: return MF_R(0.0);
     }
-    /* the heaviest tails put visible mass beyond tan = 1e15 (Student-t gamma
-     * 1.55: ~10%): those normals keep tan = 1e15, so none is horizontal (z = 0,
-     * density 0); every reflection about them points below the horizon anyway */
-    tan2 = mf_min(tan2, MF_R(1e30));
-    c2 = MF_R(1.0) / (MF_R(1.0) + tan2); ct = MF_SQRT(c2); st = MF_SQRT(tan2) * ct;
-    phi = mf__sample_phi_cos(cphi, u2);
-    return mf_vec3_make(st * MF_COS(phi), st * MF_SIN(phi), ct);
 }
-
-MF_COLD mf_vec3 mf__iso_sample_visible_view(const mf_ndf *d, mf_real ax, mf_real ay, mf_vec3 w, mf_real u1, mf_real u2)
+MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
 {
-    mf_real cv, sv, cp, sp;
-    mf_vec3 m;
-    if (w.z < MF_R(0.0) || !mf__ndf_iso(d->type)) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    mf__stretch_view(ax, ay, w, &cv, &sv, &cp, &sp);
-    m = mf__iso_sample_visible(d, cv, sv, u1, u2);
-    return mf_normalize(mf_vec3_make(ax * (cp * m.x - sp * m.y), ay * (sp * m.x + cp * m.y), m.z));
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_D)
+    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    }
 }
+MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_VISIBLE)
+    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    }
+}
+#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
+MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_PREP)
+    default: return d;
+    }
+}
+#undef MF__NDF_CASE_PREP
+#undef MF__NDF_CASE_D
+#undef MF__NDF_CASE_LAMBDA
+#undef MF__NDF_CASE_SAMPLE_D
+#undef MF__NDF_CASE_SAMPLE_VISIBLE
+
+/* The NDF-cos CDF inversion of the kinds of ISO > 0 (05_numeric_vndf.h; declared
+ * in 05_ndf.h): tan^2 at mass t from the pole (q = 1 - t beyond), the mass
+ * beyond tan2, and the exponent p of the sampler's substitution; unknown kinds
+ * give 0, 0 and 4. */
+#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
+#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
+#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
+MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_TAN2)
+    default: return MF_R(0.0);
+    }
+}
+MF_INLINE mf_real mf__ndf_iso_tail(const mf_ndf *d, mf_real tan2)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_TAIL)
+    default: return MF_R(0.0);
+    }
+}
+MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d)
+{
+    switch (d->type) {
+    MF__NDF_KINDS(MF__NDF_CASE_VNDF_P)
+    default: return MF_R(4.0);
+    }
+}
+#undef MF__NDF_CASE_TAN2
+#undef MF__NDF_CASE_TAIL
+#undef MF__NDF_CASE_VNDF_P
+
+/* The member (alpha, gamma) of the family of kind `kind` (LTC 1) in *out, 1;
+ * 0 for any other kind (out untouched). */
+#define MF__NDF_CASE_FAMILY(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(case MF_NDF_##N: *out = mf__##n##_family(alpha, gamma); return 1;)
+MF_INLINE int mf__ndf_family(int kind, mf_real alpha, mf_real gamma, mf_ndf *out)
+{
+    switch (kind) {
+    MF__NDF_KINDS(MF__NDF_CASE_FAMILY)
+    default: return 0;
+    }
+}
+#undef MF__NDF_CASE_FAMILY
 /* Fresnel averages (section 11): the quadrature. */
 MF_INLINE mf_real mf__fresnel_average(mf_real eta, mf_real k, int conductor)
 {
@@ -7301,7 +7399,8 @@ MF_COLD void mf_ibm_set_shadowing(mf_ibm *ibm, const mf_ndf *d)
     ibm->has_shadow = d ? 1 : 0;
     if (d) ibm->shadow = *d;
 }
-
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
 typedef struct mf__ibm_fp {
     int mode, tx, ty;          /* POINT: the texel */
     int direct;                /* sum the covered texels directly (Eq. 5.2) */
@@ -7744,7 +7843,8 @@ MF_INLINE mf_real mf__ibm_box_area(const mf__ibm_piece *pc, int x0, int y0, int 
     }
     return mf__ibm_rect_area(pc, (mf_real)(x0 - pc->ox), (mf_real)(y0 - pc->oy), W, H, lo, hi);
 }
-
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
 /* The bins whose weights a query needs: those of the window (cx + dx, cy + dy),
  * |dx|, |dy| <= r, that are listed; slot maps a window cell to its list entry. */
 typedef struct mf__ibm_set {
@@ -8637,7 +8737,8 @@ MF_COLD int mf_ibm_neighbourhood_weights(const mf_ibm *ibm, const mf_footprint *
     }
     return n;
 }
-
+#endif /* MF_NO_IBM */
+#ifndef MF_NO_IBM
 /* The flake Beckmann Lambda of a direction at sin^2 s2 and cosine c from a
  * bin normal; 0 where it is below 3e-19 (a = cot / alpha > 6), which adds
  * nothing to 1 + Lambda in float or double (Eq. 84 ~ exp(-a^2) / (2 a^3
@@ -9112,6 +9213,219 @@ MFDEF const char *mf_result_string(mf_result r)
 
 /* 1 if n is a positive power of two (the map builders' sizes). */
 MF_INLINE int mf__pow2(int n) { return n > 0 && (n & (n - 1)) == 0; }
+#ifndef MF_NO_MICROSURFACE
+/* PCG32 (O'Neill 2014), the generator's and the tracer's own: deterministic
+ * for a seed, no global state. The multiplier is built from 32-bit halves so
+ * that C++98 sees no long long literal. */
+typedef struct mf__pcg { mf_u64 s, inc; } mf__pcg;
+static unsigned mf__pcg_next(mf__pcg *r)
+{
+    mf_u64 old = r->s;
+    unsigned xs, rot;
+    r->s = old * (((mf_u64)0x5851F42Du << 32) | (mf_u64)0x4C957F2Du) + r->inc;
+    xs = (unsigned)(((old >> 18) ^ old) >> 27);
+    rot = (unsigned)(old >> 59);
+    return (xs >> rot) | (xs << ((32u - rot) & 31u));
+}
+static void mf__pcg_seed(mf__pcg *r, mf_u64 seed, unsigned stream)
+{
+    r->s = 0;
+    r->inc = ((mf_u64)stream << 1) | 1u;
+    mf__pcg_next(r);
+    r->s += seed;
+    mf__pcg_next(r);
+}
+/* uniform in [0, 1), 53 bits */
+static double mf__pcg_u01(mf__pcg *r)
+{
+    double a = (double)(mf__pcg_next(r) >> 5), b = (double)(mf__pcg_next(r) >> 6);
+    return (a * 67108864.0 + b) * (1.0 / 9007199254740992.0);
+}
+/* uniform integer in [0, n) */
+static unsigned mf__pcg_below(mf__pcg *r, unsigned n)
+{
+    return (unsigned)(((mf_u64)mf__pcg_next(r) * (mf_u64)n) >> 32);
+}
+/* a double in [0, 1) as an mf_real strictly below 1 (float rounds 1 - 2^-30 up) */
+static mf_real mf__u01_real(double u)
+{
+    mf_real r = (mf_real)u;
+    return r < MF_R(1.0) ? r : MF_R(1.0) - MF_EPS;
+}
+
+/* sqrt in double through MF_SQRT (float in float builds) and two Newton steps */
+static double mf__sqrt_d(double x)
+{
+    double y;
+    if (!(x > 0.0)) return 0.0;
+    if (x < 1e-30) return 1e-30 * mf__sqrt_d(x * 1e60);   /* below float's range */
+    if (x > 1e30) return 1e30 * mf__sqrt_d(x * 1e-60);
+    y = (double)MF_SQRT((mf_real)x);
+    if (!(y > 0.0)) y = x;
+    y = 0.5 * (y + x / y);
+    return 0.5 * (y + x / y);
+}
+
+/* In-place heapsort of doubles (no qsort: stdlib.h is optional here). */
+static void mf__sort_d(double *a, size_t n)
+{
+    size_t start, end, root, child;
+    double t;
+    if (n < 2) return;
+    for (start = n / 2; start-- > 0;) {
+        for (root = start; (child = 2 * root + 1) < n; root = child) {
+            if (child + 1 < n && a[child] < a[child + 1]) ++child;
+            if (!(a[root] < a[child])) break;
+            t = a[root]; a[root] = a[child]; a[child] = t;
+        }
+    }
+    for (end = n - 1; end > 0; --end) {
+        t = a[0]; a[0] = a[end]; a[end] = t;
+        for (root = 0; (child = 2 * root + 1) < end; root = child) {
+            if (child + 1 < end && a[child] < a[child + 1]) ++child;
+            if (!(a[root] < a[child])) break;
+            t = a[root]; a[root] = a[child]; a[child] = t;
+        }
+    }
+}
+
+/* The k-th smallest of a[0..n) (Hoare's selection; reorders a). */
+static double mf__select_d(double *a, size_t n, size_t k)
+{
+    size_t lo = 0, hi = n - 1;
+    while (lo < hi) {
+        double p = a[lo + (hi - lo) / 2], t;
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (a[i] < p) ++i;
+            while (p < a[j]) --j;
+            if (i <= j) {
+                t = a[i]; a[i] = a[j]; a[j] = t;
+                ++i;
+                if (j == 0) break;
+                --j;
+            }
+        }
+        if (k <= j) hi = j;
+        else if (k >= i) lo = i;
+        else break;
+    }
+    return a[k];
+}
+
+/* ---- FFT: radix-2, complex, double precision (interleaved re, im), for
+ * power-of-two sizes. Twiddles cos/sin(2 pi k / n), k < n/2, from the
+ * half-angle recursion cos(a/2) = sqrt((1 + cos a)/2), sin(a/2) = sin a /
+ * (2 cos(a/2)) and products over the bits of k: accurate to a few ulps of
+ * double without a double-precision libm call. */
+static void mf__fft_twiddles(double *c, double *s, int n)
+{
+    double bc[32], bs[32];
+    int logn = 0, j, k;
+    while ((1 << logn) < n) ++logn;
+    bc[0] = 1.0; bs[0] = 0.0;       /* angle 2 pi / 2^j for j = 0, 1, 2 ... */
+    bc[1] = -1.0; bs[1] = 0.0;
+    bc[2] = 0.0; bs[2] = 1.0;
+    for (j = 3; j <= logn && j < 32; ++j) {
+        bc[j] = mf__sqrt_d(0.5 * (1.0 + bc[j - 1]));
+        bs[j] = bs[j - 1] / (2.0 * bc[j]);
+    }
+    for (k = 0; k < n / 2; ++k) {
+        double cr = 1.0, ci = 0.0;
+        for (j = 0; j < logn; ++j)
+            if (k & (1 << j)) {          /* rotate by 2 pi 2^j / n = 2 pi / 2^(logn - j) */
+                double ar = bc[logn - j], ai = bs[logn - j], t = cr * ar - ci * ai;
+                ci = cr * ai + ci * ar;
+                cr = t;
+            }
+        c[k] = cr; s[k] = ci;
+    }
+}
+
+/* forward: sum a_k e^{-2 pi i jk/n}; inverse: e^{+...}, unscaled */
+static void mf__fft1(double *a, int n, const double *c, const double *s, int inverse)
+{
+    int i, j, len, k;
+    for (i = 1, j = 0; i < n; ++i) {
+        int bit = n >> 1;
+        for (; j & bit; bit >>= 1) j ^= bit;
+        j ^= bit;
+        if (i < j) {
+            double t = a[2 * i]; a[2 * i] = a[2 * j]; a[2 * j] = t;
+            t = a[2 * i + 1]; a[2 * i + 1] = a[2 * j + 1]; a[2 * j + 1] = t;
+        }
+    }
+    for (i = 0; i < n; i += 2) {   /* first stage: twiddle 1 */
+        double *p = a + 2 * i, tr = p[2], ti = p[3];
+        p[2] = p[0] - tr; p[3] = p[1] - ti;
+        p[0] += tr; p[1] += ti;
+    }
+    for (len = 4; len <= n; len <<= 1) {   /* one twiddle per k, all blocks */
+        int half = len >> 1, step = n / len;
+        for (k = 0; k < half; ++k) {
+            double wr = c[k * step], wi = inverse ? s[k * step] : -s[k * step];
+            for (i = k; i < n; i += len) {
+                double *p = a + 2 * i, *q = a + 2 * (i + half);
+                double tr = q[0] * wr - q[1] * wi, ti = q[0] * wi + q[1] * wr;
+                q[0] = p[0] - tr; q[1] = p[1] - ti;
+                p[0] += tr; p[1] += ti;
+            }
+        }
+    }
+}
+
+/* Transform of the columns of an n x n row-major array, 8 at a time
+ * through tmp (16 n doubles) to stay in cache. */
+static void mf__fft_columns(double *a, int n, const double *c, const double *s, int inverse, double *tmp)
+{
+    int x, y, b, nb;
+    nb = n < 8 ? n : 8;
+    for (x = 0; x < n; x += nb) {
+        for (y = 0; y < n; ++y)
+            for (b = 0; b < nb; ++b) {
+                const double *p = a + 2 * ((size_t)y * (size_t)n + (size_t)(x + b));
+                tmp[2 * ((size_t)b * (size_t)n + (size_t)y)] = p[0];
+                tmp[2 * ((size_t)b * (size_t)n + (size_t)y) + 1] = p[1];
+            }
+        for (b = 0; b < nb; ++b) mf__fft1(tmp + 2 * (size_t)b * (size_t)n, n, c, s, inverse);
+        for (y = 0; y < n; ++y)
+            for (b = 0; b < nb; ++b) {
+                double *p = a + 2 * ((size_t)y * (size_t)n + (size_t)(x + b));
+                p[0] = tmp[2 * ((size_t)b * (size_t)n + (size_t)y)];
+                p[1] = tmp[2 * ((size_t)b * (size_t)n + (size_t)y) + 1];
+            }
+    }
+}
+
+/* forward 2D transform: rows, then columns */
+static void mf__fft2(double *a, int n, const double *c, const double *s, double *tmp)
+{
+    int y;
+    for (y = 0; y < n; ++y) mf__fft1(a + 2 * (size_t)y * (size_t)n, n, c, s, 0);
+    mf__fft_columns(a, n, c, s, 0, tmp);
+}
+
+/* inverse 2D transform of a Hermitian spectrum (a real result, unscaled, into
+ * out): columns, then the rows two at a time (rows A, B with real inverses a,
+ * b: the inverse of A + iB is a + ib), a quarter less work */
+static void mf__ifft2_real(double *a, int n, const double *c, const double *s, double *tmp, double *out)
+{
+    int x, y;
+    mf__fft_columns(a, n, c, s, 1, tmp);
+    for (y = 0; y < n; y += 2) {
+        const double *ra = a + 2 * (size_t)y * (size_t)n, *rb = a + 2 * (size_t)(y + 1) * (size_t)n;
+        for (x = 0; x < n; ++x) {
+            tmp[2 * x] = ra[2 * x] - rb[2 * x + 1];
+            tmp[2 * x + 1] = ra[2 * x + 1] + rb[2 * x];
+        }
+        mf__fft1(tmp, n, c, s, 1);
+        for (x = 0; x < n; ++x) {
+            out[(size_t)y * (size_t)n + (size_t)x] = tmp[2 * x];
+            out[(size_t)(y + 1) * (size_t)n + (size_t)x] = tmp[2 * x + 1];
+        }
+    }
+}
+#endif /* MF_NO_MICROSURFACE */
 /* ---- Tabulated (piecewise-linear) distributions ---- */
 
 static void mf__tab_zero(mf_tabulated *t)
@@ -9216,6 +9530,17 @@ MFDEF mf_result mf_tabulated_build(mf_tabulated *t, const mf_real *theta, const 
     return MF_SUCCESS;
 }
 
+MFDEF void mf_tabulated_release(mf_tabulated *t)
+{
+    if (!t) return;
+    MF_FREE(t->block);
+    mf__tab_zero(t);
+}
+
+MFDEF size_t mf_tabulated_memory_bytes(const mf_tabulated *t)
+{
+    return t && t->block ? t->bytes : 0;
+}
 /* D of d averaged over the azimuths phi0 and phi0 + pi, at polar angle th */
 static mf_real mf__tab_slice(const mf_ndf *d, mf_real th, mf_real phi0)
 {
@@ -9344,18 +9669,6 @@ MFDEF mf_result mf_tabulated_from_ndf(mf_tabulated *t, const mf_ndf *d, int n)
     r = mf_tabulated_build(t, th, dx, iso ? (const mf_real *)0 : dy, m);
     MF_FREE(th);
     return r;
-}
-
-MFDEF void mf_tabulated_release(mf_tabulated *t)
-{
-    if (!t) return;
-    MF_FREE(t->block);
-    mf__tab_zero(t);
-}
-
-MFDEF size_t mf_tabulated_memory_bytes(const mf_tabulated *t)
-{
-    return t && t->block ? t->bytes : 0;
 }
 #ifndef MF_NO_LEADR
 /* ---- LEADR moment maps ---- */
@@ -14513,220 +14826,6 @@ MFDEF mf_result mf_ibm_load(mf_ibm *ibm, const void *buf, size_t bytes)
 }
 #endif /* MF_NO_IBM */
 #ifndef MF_NO_MICROSURFACE
-/* ---- Microsurface generation and the virtual gonioreflectometer ---- */
-
-/* PCG32 (O'Neill 2014), the generator's and the tracer's own: deterministic
- * for a seed, no global state. The multiplier is built from 32-bit halves so
- * that C++98 sees no long long literal. */
-typedef struct mf__pcg { mf_u64 s, inc; } mf__pcg;
-static unsigned mf__pcg_next(mf__pcg *r)
-{
-    mf_u64 old = r->s;
-    unsigned xs, rot;
-    r->s = old * (((mf_u64)0x5851F42Du << 32) | (mf_u64)0x4C957F2Du) + r->inc;
-    xs = (unsigned)(((old >> 18) ^ old) >> 27);
-    rot = (unsigned)(old >> 59);
-    return (xs >> rot) | (xs << ((32u - rot) & 31u));
-}
-static void mf__pcg_seed(mf__pcg *r, mf_u64 seed, unsigned stream)
-{
-    r->s = 0;
-    r->inc = ((mf_u64)stream << 1) | 1u;
-    mf__pcg_next(r);
-    r->s += seed;
-    mf__pcg_next(r);
-}
-/* uniform in [0, 1), 53 bits */
-static double mf__pcg_u01(mf__pcg *r)
-{
-    double a = (double)(mf__pcg_next(r) >> 5), b = (double)(mf__pcg_next(r) >> 6);
-    return (a * 67108864.0 + b) * (1.0 / 9007199254740992.0);
-}
-/* uniform integer in [0, n) */
-static unsigned mf__pcg_below(mf__pcg *r, unsigned n)
-{
-    return (unsigned)(((mf_u64)mf__pcg_next(r) * (mf_u64)n) >> 32);
-}
-/* a double in [0, 1) as an mf_real strictly below 1 (float rounds 1 - 2^-30 up) */
-static mf_real mf__u01_real(double u)
-{
-    mf_real r = (mf_real)u;
-    return r < MF_R(1.0) ? r : MF_R(1.0) - MF_EPS;
-}
-
-/* sqrt in double through MF_SQRT (float in float builds) and two Newton steps */
-static double mf__sqrt_d(double x)
-{
-    double y;
-    if (!(x > 0.0)) return 0.0;
-    if (x < 1e-30) return 1e-30 * mf__sqrt_d(x * 1e60);   /* below float's range */
-    if (x > 1e30) return 1e30 * mf__sqrt_d(x * 1e-60);
-    y = (double)MF_SQRT((mf_real)x);
-    if (!(y > 0.0)) y = x;
-    y = 0.5 * (y + x / y);
-    return 0.5 * (y + x / y);
-}
-
-/* In-place heapsort of doubles (no qsort: stdlib.h is optional here). */
-static void mf__sort_d(double *a, size_t n)
-{
-    size_t start, end, root, child;
-    double t;
-    if (n < 2) return;
-    for (start = n / 2; start-- > 0;) {
-        for (root = start; (child = 2 * root + 1) < n; root = child) {
-            if (child + 1 < n && a[child] < a[child + 1]) ++child;
-            if (!(a[root] < a[child])) break;
-            t = a[root]; a[root] = a[child]; a[child] = t;
-        }
-    }
-    for (end = n - 1; end > 0; --end) {
-        t = a[0]; a[0] = a[end]; a[end] = t;
-        for (root = 0; (child = 2 * root + 1) < end; root = child) {
-            if (child + 1 < end && a[child] < a[child + 1]) ++child;
-            if (!(a[root] < a[child])) break;
-            t = a[root]; a[root] = a[child]; a[child] = t;
-        }
-    }
-}
-
-/* The k-th smallest of a[0..n) (Hoare's selection; reorders a). */
-static double mf__select_d(double *a, size_t n, size_t k)
-{
-    size_t lo = 0, hi = n - 1;
-    while (lo < hi) {
-        double p = a[lo + (hi - lo) / 2], t;
-        size_t i = lo, j = hi;
-        while (i <= j) {
-            while (a[i] < p) ++i;
-            while (p < a[j]) --j;
-            if (i <= j) {
-                t = a[i]; a[i] = a[j]; a[j] = t;
-                ++i;
-                if (j == 0) break;
-                --j;
-            }
-        }
-        if (k <= j) hi = j;
-        else if (k >= i) lo = i;
-        else break;
-    }
-    return a[k];
-}
-
-/* ---- FFT: radix-2, complex, double precision (interleaved re, im), for
- * power-of-two sizes. Twiddles cos/sin(2 pi k / n), k < n/2, from the
- * half-angle recursion cos(a/2) = sqrt((1 + cos a)/2), sin(a/2) = sin a /
- * (2 cos(a/2)) and products over the bits of k: accurate to a few ulps of
- * double without a double-precision libm call. */
-static void mf__fft_twiddles(double *c, double *s, int n)
-{
-    double bc[32], bs[32];
-    int logn = 0, j, k;
-    while ((1 << logn) < n) ++logn;
-    bc[0] = 1.0; bs[0] = 0.0;       /* angle 2 pi / 2^j for j = 0, 1, 2 ... */
-    bc[1] = -1.0; bs[1] = 0.0;
-    bc[2] = 0.0; bs[2] = 1.0;
-    for (j = 3; j <= logn && j < 32; ++j) {
-        bc[j] = mf__sqrt_d(0.5 * (1.0 + bc[j - 1]));
-        bs[j] = bs[j - 1] / (2.0 * bc[j]);
-    }
-    for (k = 0; k < n / 2; ++k) {
-        double cr = 1.0, ci = 0.0;
-        for (j = 0; j < logn; ++j)
-            if (k & (1 << j)) {          /* rotate by 2 pi 2^j / n = 2 pi / 2^(logn - j) */
-                double ar = bc[logn - j], ai = bs[logn - j], t = cr * ar - ci * ai;
-                ci = cr * ai + ci * ar;
-                cr = t;
-            }
-        c[k] = cr; s[k] = ci;
-    }
-}
-
-/* forward: sum a_k e^{-2 pi i jk/n}; inverse: e^{+...}, unscaled */
-static void mf__fft1(double *a, int n, const double *c, const double *s, int inverse)
-{
-    int i, j, len, k;
-    for (i = 1, j = 0; i < n; ++i) {
-        int bit = n >> 1;
-        for (; j & bit; bit >>= 1) j ^= bit;
-        j ^= bit;
-        if (i < j) {
-            double t = a[2 * i]; a[2 * i] = a[2 * j]; a[2 * j] = t;
-            t = a[2 * i + 1]; a[2 * i + 1] = a[2 * j + 1]; a[2 * j + 1] = t;
-        }
-    }
-    for (i = 0; i < n; i += 2) {   /* first stage: twiddle 1 */
-        double *p = a + 2 * i, tr = p[2], ti = p[3];
-        p[2] = p[0] - tr; p[3] = p[1] - ti;
-        p[0] += tr; p[1] += ti;
-    }
-    for (len = 4; len <= n; len <<= 1) {   /* one twiddle per k, all blocks */
-        int half = len >> 1, step = n / len;
-        for (k = 0; k < half; ++k) {
-            double wr = c[k * step], wi = inverse ? s[k * step] : -s[k * step];
-            for (i = k; i < n; i += len) {
-                double *p = a + 2 * i, *q = a + 2 * (i + half);
-                double tr = q[0] * wr - q[1] * wi, ti = q[0] * wi + q[1] * wr;
-                q[0] = p[0] - tr; q[1] = p[1] - ti;
-                p[0] += tr; p[1] += ti;
-            }
-        }
-    }
-}
-
-/* Transform of the columns of an n x n row-major array, 8 at a time
- * through tmp (16 n doubles) to stay in cache. */
-static void mf__fft_columns(double *a, int n, const double *c, const double *s, int inverse, double *tmp)
-{
-    int x, y, b, nb;
-    nb = n < 8 ? n : 8;
-    for (x = 0; x < n; x += nb) {
-        for (y = 0; y < n; ++y)
-            for (b = 0; b < nb; ++b) {
-                const double *p = a + 2 * ((size_t)y * (size_t)n + (size_t)(x + b));
-                tmp[2 * ((size_t)b * (size_t)n + (size_t)y)] = p[0];
-                tmp[2 * ((size_t)b * (size_t)n + (size_t)y) + 1] = p[1];
-            }
-        for (b = 0; b < nb; ++b) mf__fft1(tmp + 2 * (size_t)b * (size_t)n, n, c, s, inverse);
-        for (y = 0; y < n; ++y)
-            for (b = 0; b < nb; ++b) {
-                double *p = a + 2 * ((size_t)y * (size_t)n + (size_t)(x + b));
-                p[0] = tmp[2 * ((size_t)b * (size_t)n + (size_t)y)];
-                p[1] = tmp[2 * ((size_t)b * (size_t)n + (size_t)y) + 1];
-            }
-    }
-}
-
-/* forward 2D transform: rows, then columns */
-static void mf__fft2(double *a, int n, const double *c, const double *s, double *tmp)
-{
-    int y;
-    for (y = 0; y < n; ++y) mf__fft1(a + 2 * (size_t)y * (size_t)n, n, c, s, 0);
-    mf__fft_columns(a, n, c, s, 0, tmp);
-}
-
-/* inverse 2D transform of a Hermitian spectrum (a real result, unscaled, into
- * out): columns, then the rows two at a time (rows A, B with real inverses a,
- * b: the inverse of A + iB is a + ib), a quarter less work */
-static void mf__ifft2_real(double *a, int n, const double *c, const double *s, double *tmp, double *out)
-{
-    int x, y;
-    mf__fft_columns(a, n, c, s, 1, tmp);
-    for (y = 0; y < n; y += 2) {
-        const double *ra = a + 2 * (size_t)y * (size_t)n, *rb = a + 2 * (size_t)(y + 1) * (size_t)n;
-        for (x = 0; x < n; ++x) {
-            tmp[2 * x] = ra[2 * x] - rb[2 * x + 1];
-            tmp[2 * x + 1] = ra[2 * x + 1] + rb[2 * x];
-        }
-        mf__fft1(tmp, n, c, s, 1);
-        for (x = 0; x < n; ++x) {
-            out[(size_t)y * (size_t)n + (size_t)x] = tmp[2 * x];
-            out[(size_t)(y + 1) * (size_t)n + (size_t)x] = tmp[2 * x + 1];
-        }
-    }
-}
-
 /* ---- Generation (Ribardiere et al. 2019, Sec. 4.2, Algorithm 1) ----
  *
  * Discretization. A grid point (x, y) carries one target slope t = (tx, ty),
@@ -15193,7 +15292,8 @@ MFDEF mf_result mf_microsurface_integrate(const mf_real *gradients_xy, int size,
     mf__ms_free(&m);
     return MF_SUCCESS;
 }
-
+#endif /* MF_NO_MICROSURFACE */
+#ifndef MF_NO_MICROSURFACE
 /* ---- The virtual gonioreflectometer ---- */
 
 MFDEF void mf_gonio_release(mf_gonio *g)

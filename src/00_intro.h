@@ -31,17 +31,22 @@
  *   == 2. Vectors, 2x2 matrices and frames
  *   == 3. Fresnel
  *   == 4. Special functions (erf inverse, incomplete beta, stable helpers,
- *         Newton steps and Gauss-Legendre nodes for the numerical samplers)
- *   == 5. Distributions: the mf_ndf value type, its kinds and the one
- *         dispatch point
+ *         Newton steps for the numerical samplers)
+ *   == 4b. Utilities: the rejection samplers' random stream, quadrature rules
+ *          (Gauss-Legendre, Gauss-Jacobi); PCG32, sorting, selection and an
+ *          FFT for the microsurface generator and the gonioreflectometer
+ *   == 5. Distributions: the mf_ndf value type, its kinds (MF__NDF_KINDS
+ *         and their traits) and the inline front ends of the one dispatch
+ *   == 5b. Numerical visible-normal sampling of the heavy-tailed kinds and
+ *          of Charlie (through the trait ISO)
  *   == 6. Distribution kinds, one module each: Beckmann, Charlie (sheen),
  *         GGX, GTR, LEADR (non-centered Beckmann), Student-t, tabulated
  *         (piecewise-linear)
- *   == 7. Numerical visible-normal sampling of the heavy-tailed kinds and
- *         of Charlie
+ *   == 7. The kinds' dispatch: the cold switches of the generic operations
  *   == 8. Linearly transformed microsurfaces: any 2x2 transform of any
  *         distribution, stretch anisotropy, deformation tracking; mf_D
  *   == 9. Smith masking: Lambda, G1, G2 (height-correlated, separable), D_visible
+ *   == 9b. Tabulating any distribution (mf_tabulated_from_ndf)
  *   == 10. Sampling: NDF (D cos) and visible normals (VNDF) for every kind
  *   == 11. Specular microfacet BRDF: eval, sample, pdf; GGX bounded VNDF
  *         sampling; Fresnel averages
@@ -51,15 +56,24 @@
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
  *          horizon clipping, vector form factor, sphere lights, multi-scale
  *          roughness, fitting and tables
- *   == 14. The built-in GGX LTC table (generated data)
- *   == 15. Inverse Bin Map: compact integral histograms of normal maps,
- *          footprint queries, the filtered glint BRDF, sampling and pdf
- *   == 16. Microsurface generation from any distribution and a virtual
- *          gonioreflectometer
+ *   == 13b. LTC light shapes: ellipses, disks, lines, tubes, textured quads
+ *   == 14. The built-in GGX and Beckmann LTC tables (generated data)
+ *   == 15. Inverse Bin Map: compact integral histograms of normal maps;
+ *          overview, the mf_ibm type and its packed bit format
+ *   == 15b. IBM footprints: periods, pieces, exact areas
+ *   == 15c. IBM bin weights: the kd-tree traversal
+ *   == 15d. IBM filtered glint BRDF, sampling and pdf
+ *   == 15e. IBM build, save, load
+ *   == 16. Microsurface generation from any distribution
+ *   == 16b. A virtual gonioreflectometer
  *   == 17. The built-in GGX and Beckmann albedo tables (generated data)
  *   == 18. Energy compensation (Kulla & Conty 2017): albedo, the multiple-
  *          scattering lobe and its sampling, Turquin scaling, table builders
  *          for any kind, rough dielectrics of a given eta
+ *   == 19. F82-tint and thin-film Fresnel
+ *   == 20. EON: energy-preserving Oren-Nayar diffuse
+ *   == 21. Sheen: the Charlie distribution with its exact Smith Lambda
+ *   == 97. Deprecated 0.3 names (MF_NO_DEPRECATED drops them)
  *
  * ADDING A DISTRIBUTION KIND
  *
@@ -69,7 +83,10 @@
  *      mf_ndf stays within 64 bytes in float; larger data goes in a built
  *      object it points to, like mf_tabulated or mf_gtr_table), a constructor
  *      that fills mf_ndf through mf__ndf_init, and mf__<name>_D, _lambda,
- *      _sample_D and _sample_visible (contract in 05_ndf.h).
+ *      _sample_D and _sample_visible (contract in 05_ndf.h). A kind may use
+ *      modules 1-5b and the kinds whose files sort before its own, nothing
+ *      later (tools/prefix_check.sh, run by `make header`, checks it);
+ *      07_ndf_dispatch.h then reaches it through its traits by itself.
  *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
  *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
  *      front ends inline, whether its mean slope is 0, which numerical

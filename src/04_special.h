@@ -20,6 +20,15 @@ MF_INLINE mf_real mf__log1p_over_x(mf_real x)
     return MF_LOG1P(x) / x;
 }
 
+/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
+ * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
+ * power-law draws (GTR, Student-t) */
+MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
+{
+    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
+    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
+}
+
 /* Inverse of erf on (-1, 1): Giles' single-precision approximation (2010),
  * polished by Newton steps on erf/erfc. Finite for every input (clamped). */
 MF_INLINE mf_real mf__erfinv_giles(mf_real y)
@@ -203,53 +212,4 @@ MF_INLINE mf_real mf__sample_phi_cos(mf_real c, mf_real u)
             break;
     MF__SOLVER_DONE(MF__SITE_PHI_COS, i, 60);
     return sgn * phi;
-}
-
-/* 8-point Gauss-Legendre rule: nodes xi on [-1, 1], weights normalized to sum 1. */
-#define MF__GL_N 8
-MF_INLINE mf_real mf__gl_xi(int i)
-{
-    const mf_real x[MF__GL_N] = {
-        MF_R(-0.96028985649753623), MF_R(-0.79666647741362674), MF_R(-0.52553240991632899),
-        MF_R(-0.18343464249564980), MF_R(0.18343464249564980), MF_R(0.52553240991632899),
-        MF_R(0.79666647741362674), MF_R(0.96028985649753623) };
-    return x[i];
-}
-MF_INLINE mf_real mf__gl_w(int i)
-{
-    const mf_real w[MF__GL_N] = {
-        MF_R(0.050614268145188130), MF_R(0.11119051722668724), MF_R(0.15685332293894364),
-        MF_R(0.18134189168918100), MF_R(0.18134189168918100), MF_R(0.15685332293894364),
-        MF_R(0.11119051722668724), MF_R(0.050614268145188130) };
-    return w[i];
-}
-
-/* node i of the 8-point rule in panel p of `panels` equal panels of [0, 1] */
-MF_INLINE mf_real mf__gl_node01(int p, int i, int panels)
-{
-    return ((mf_real)p + MF_R(0.5) + MF_R(0.5) * mf__gl_xi(i)) / (mf_real)panels;
-}
-
-/* 4-point Gauss-Legendre rule on [-1, 1], weights normalized to sum 1. */
-MF_INLINE mf_real mf__gl4_xi(int i)
-{
-    const mf_real x[4] = { MF_R(-0.86113631159405258), MF_R(-0.33998104358485626), MF_R(0.33998104358485626),
-                           MF_R(0.86113631159405258) };
-    return x[i];
-}
-MF_INLINE mf_real mf__gl4_w(int i)
-{
-    const mf_real w[4] = { MF_R(0.17392742256872693), MF_R(0.32607257743127307), MF_R(0.32607257743127307),
-                           MF_R(0.17392742256872693) };
-    return w[i];
-}
-
-/* Legendre polynomials P_0..P_(MF__GL_N) at x. */
-MF_INLINE void mf__legendre(mf_real x, mf_real *p)
-{
-    int n;
-    p[0] = MF_R(1.0);
-    p[1] = x;
-    for (n = 1; n < MF__GL_N; ++n)
-        p[n + 1] = ((mf_real)(2 * n + 1) * x * p[n] - (mf_real)n * p[n - 1]) / (mf_real)(n + 1);
 }

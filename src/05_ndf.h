@@ -48,7 +48,8 @@
  *   - and what its traits promise. The traits are the line's digits; no module
  *     but this one and the kind's own tests a kind by name (tests/kind_names_check.sh):
  *     INL  0: the generic front ends (mf_D, mf_lambda, mf_sample_D,
- *          mf_sample_visible) reach the kind through the cold dispatch below;
+ *          mf_sample_visible) reach the kind through the cold dispatch (declared
+ *          below, defined in 07_ndf_dispatch.h after the kinds);
  *          1: they inline its D, Lambda and NDF sampling, which are then
  *          MF_FORCE_INLINE, with mf__<name>_sample_D_dir (the NDF sample before
  *          normalization); 2: its visible normals too, with
@@ -58,11 +59,11 @@
  *          void mf__<name>_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my),
  *          MF_FORCE_INLINE (the mean surface is tilted: projected area and BSDF
  *          weights use it).
- *     ISO  visible normals by the numerical inversion of 07_numeric_vndf.h
+ *     ISO  visible normals by the numerical inversion of 05_numeric_vndf.h
  *          through the NDF-cos CDF of an isotropic distribution: 0 none; 1 of
  *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
  *          The kind defines mf__<name>_tan2(d, t, q), mf__<name>_tail(d, tan2)
- *          and mf__<name>_vndf_p(d) (see 07_numeric_vndf.h).
+ *          and mf__<name>_vndf_p(d) (see 05_numeric_vndf.h).
  *     LTC  1: mf_ltc_table_build fits the kind's family of one roughness
  *          alpha and one shape gamma; the kind defines
  *          mf_ndf mf__<name>_family(mf_real alpha, mf_real gamma).
@@ -260,7 +261,8 @@ MF_FORCE_INLINE void mf__stretch_view(mf_real ax, mf_real ay, mf_vec3 w, mf_real
     else { *cp = MF_R(1.0); *sp = MF_R(0.0); }
 }
 /* The generic dispatch of the untransformed kinds (cold: the front ends in
- * modules 8-10 inline the kinds of INL > 0 and call these for the others).
+ * modules 8-10 inline the kinds of INL > 0 and call these for the others;
+ * defined in 07_ndf_dispatch.h, after the kinds).
  * An unknown kind gives 0, and no sample: the zero vector. */
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w);
@@ -352,91 +354,10 @@ MF_FORCE_INLINE void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *m
 #undef MF__NDF_TRY_V2
 #undef MF__NDF_TRY_VD2
 /* @cold */
-#define MF__NDF_CASE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
-#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
-#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
-#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
-MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_D)
-    default: return MF_R(0.0);
-    }
-}
-MF_COLD mf_real mf__ndf_lambda(const mf_ndf *d, mf_vec3 w)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_LAMBDA)
-    default: return MF_R(0.0);
-    }
-}
-MF_COLD mf_vec3 mf__ndf_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_D)
-    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    }
-}
-MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_SAMPLE_VISIBLE)
-    default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
-    }
-}
-#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
-MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_PREP)
-    default: return d;
-    }
-}
-#undef MF__NDF_CASE_PREP
-#undef MF__NDF_CASE_D
-#undef MF__NDF_CASE_LAMBDA
-#undef MF__NDF_CASE_SAMPLE_D
-#undef MF__NDF_CASE_SAMPLE_VISIBLE
-
-/* The NDF-cos CDF inversion of the kinds of ISO > 0 (07_numeric_vndf.h): tan^2
+/* The NDF-cos CDF inversion of the kinds of ISO > 0 (05_numeric_vndf.h): tan^2
  * at mass t from the pole (q = 1 - t beyond), the mass beyond tan2, and the
- * exponent p of the sampler's substitution; unknown kinds give 0, 0 and 4. */
-#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
-#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
-#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
-MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_TAN2)
-    default: return MF_R(0.0);
-    }
-}
-MF_INLINE mf_real mf__ndf_iso_tail(const mf_ndf *d, mf_real tan2)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_TAIL)
-    default: return MF_R(0.0);
-    }
-}
-MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d)
-{
-    switch (d->type) {
-    MF__NDF_KINDS(MF__NDF_CASE_VNDF_P)
-    default: return MF_R(4.0);
-    }
-}
-#undef MF__NDF_CASE_TAN2
-#undef MF__NDF_CASE_TAIL
-#undef MF__NDF_CASE_VNDF_P
-
-/* The member (alpha, gamma) of the family of kind `kind` (LTC 1) in *out, 1;
- * 0 for any other kind (out untouched). */
-#define MF__NDF_CASE_FAMILY(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(case MF_NDF_##N: *out = mf__##n##_family(alpha, gamma); return 1;)
-MF_INLINE int mf__ndf_family(int kind, mf_real alpha, mf_real gamma, mf_ndf *out)
-{
-    switch (kind) {
-    MF__NDF_KINDS(MF__NDF_CASE_FAMILY)
-    default: return 0;
-    }
-}
-#undef MF__NDF_CASE_FAMILY
+ * exponent p of the sampler's substitution; unknown kinds give 0, 0 and 4.
+ * Defined with the dispatch (07_ndf_dispatch.h), after the kinds. */
+MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q);
+MF_INLINE mf_real mf__ndf_iso_tail(const mf_ndf *d, mf_real tan2);
+MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d);

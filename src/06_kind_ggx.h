@@ -73,56 +73,6 @@ MF_INLINE mf_vec3 mf__ggx_sample_visible_k(mf_real ax, mf_real ay, mf_real k, mf
     return mf_scale(h, MF_R(1.0) / MF_SQRT(mf_dot(h, h)));
 }
 
-/* Uniforms for the extra draws of the rejection samplers (GTR, Student-t):
- * a counter seeded by the bits of the caller's (u1, u2) rounded to float
- * (u2's multiplied by an odd constant) and hashed by an integer mixer
- * (xor-shift-multiply rounds), so every sampler
- * stays a function of (u1, u2) and float and double builds draw the same
- * stream (double adds 32 lower bits from a second hash). */
-MF_INLINE unsigned int mf__mix32(unsigned int x)
-{
-    x ^= x >> 16; x *= 0x7feb352du; x &= 0xffffffffu;
-    x ^= x >> 15; x *= 0x846ca68bu; x &= 0xffffffffu;
-    return x ^ (x >> 16);
-}
-MF_INLINE unsigned int mf__float_bits(mf_real x)
-{
-    union { float f; unsigned int u; } v;
-    v.f = (float)x;
-    return v.u;
-}
-MF_INLINE unsigned int mf__stream_seed(mf_real u1, mf_real u2)
-{
-    return mf__mix32(mf__float_bits(u1) ^ ((mf__float_bits(u2) * 0x9e3779b1u) & 0xffffffffu));
-}
-/* the next uniform in [0, 1) */
-MF_INLINE mf_real mf__stream_next(unsigned int *s)
-{
-    mf_real u;
-    *s = (*s + 0x9e3779b9u) & 0xffffffffu;
-    u = (mf_real)(mf__mix32(*s) >> 8) * MF_R(5.9604644775390625e-8);
-#ifdef MF_USE_DOUBLE
-    u += (mf_real)mf__mix32(*s ^ 0x632be5abu) * MF_R(1.3877787807814457e-17);   /* 2^-56 */
-#endif
-    return u;
-}
-/* a proposal's next two uniforms, in this order (two mf__stream_next calls
- * as the arguments of one call would leave their order to the compiler) */
-MF_INLINE void mf__stream_next2(unsigned int *s, mf_real *u1, mf_real *u2)
-{
-    *u1 = mf__stream_next(s);
-    *u2 = mf__stream_next(s);
-}
-
-/* log1p(x) / x for x in (-1, 0], with one log (Goldberg 1991: the rounding
- * of 1 + x cancels in log(1 + x) / ((1 + x) - 1)); the rejection samplers'
- * power-law draws (GTR, Student-t) */
-MF_INLINE mf_real mf__log1p_over_x_fast(mf_real x)
-{
-    mf_real y = MF_R(1.0) + x, e = y - MF_R(1.0);
-    return e != MF_R(0.0) ? MF_LOG(y) / e : MF_R(1.0);
-}
-
 /* The kind's entries of the generic dispatch (05_ndf.h; INL 2: the front
  * ends inline them). */
 MF_FORCE_INLINE mf_real mf__ggx_D(const mf_ndf *d, mf_vec3 wm) { return mf_ggx_D(d->ax, d->ay, wm); }

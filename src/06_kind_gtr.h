@@ -11,11 +11,11 @@
  * a microsecond). NDF sampling by the closed-form inverse CDF
  * (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
  * mixture of GGX lobes (mf__gtr_sample_visible), falling back on the exact
- * numerical inversion of 07_numeric_vndf.h. Everything but the constructors
+ * numerical inversion of 05_numeric_vndf.h. Everything but the constructors
  * is cold. */
 /* @decl */
 /* most nodes of the Lambda mixture rule (the rule takes fewer at larger
- * alpha: mf__gtr_mix_init) */
+ * alpha: mf__gtr_mix_init); at most MF__GJ_MAX of 04_util.h */
 #define MF__GTR_NQ 24
 /* What a GTR computes at each call without it: the Lambda rule at a
  * non-integer gamma, and the visible sampler's mixture envelope (gamma below
@@ -107,7 +107,7 @@ MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h; ISO 1). */
+ * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h; ISO 1). */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__gtr_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
@@ -272,49 +272,6 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
         mf__gtr_mix_init(&t, d->ax, p->gamma);
         return mf__gtr_lambda_mix(&t, mix, t2);
     }
-}
-
-/* Gauss-Jacobi rule for the weight (1-x)^ea (1+x)^eb on [-1, 1] by Golub and
- * Welsch (1969): nodes are the eigenvalues of the Jacobi matrix of the
- * polynomials' recurrence, weights the squared first components of its unit
- * eigenvectors (unnormalized: the caller normalizes). Implicit QL with Wilkinson
- * shifts, at most 60 sweeps per eigenvalue. In double in every build: float
- * nodes would move b = exp(y) by 2e-6 at alpha 1e-4. */
-MF_INLINE void mf__gauss_jacobi(int n, double ea, double eb, double *x, double *w)
-{
-    double e[MF__GTR_NQ];
-    int i, l, m, it;
-    for (i = 0; i < n; ++i) {
-        double s = 2.0 * i + ea + eb, k = i + 1.0, t = 2.0 * k + ea + eb;
-        x[i] = i == 0 ? (eb - ea) / (ea + eb + 2.0) : (eb - ea) * (eb + ea) / (s * (s + 2.0));
-        e[i] = i + 1 < n ? sqrt(4.0 * k * (k + ea) * (k + eb) * (k + ea + eb) /
-                                   (t * t * (t + 1.0) * (t - 1.0))) : 0.0;
-        w[i] = i == 0 ? 1.0 : 0.0;   /* first row of the eigenvector matrix */
-    }
-    for (l = 0; l < n; ++l) {
-        for (it = 0; it < 60; ++it) {
-            double g, r, s, c, pp, f, bb;
-            for (m = l; m < n - 1; ++m)
-                if (fabs(e[m]) <= 2.220446049250313e-16 * (fabs(x[m]) + fabs(x[m + 1]))) break;
-            if (m == l) break;
-            g = (x[l + 1] - x[l]) / (2.0 * e[l]);
-            r = sqrt(g * g + 1.0);
-            g = x[m] - x[l] + e[l] / (g + (g >= 0.0 ? r : -r));
-            s = c = 1.0; pp = 0.0;
-            for (i = m - 1; i >= l; --i) {
-                f = s * e[i]; bb = c * e[i];
-                r = sqrt(f * f + g * g); e[i + 1] = r;
-                if (r == 0.0) { x[i + 1] -= pp; e[m] = 0.0; break; }
-                s = f / r; c = g / r; g = x[i + 1] - pp;
-                r = (x[i] - g) * s + 2.0 * c * bb;
-                pp = s * r; x[i + 1] = g + pp; g = c * r - bb;
-                f = w[i + 1]; w[i + 1] = s * w[i] + c * f; w[i] = c * w[i] - s * f;
-            }
-            if (r == 0.0 && i >= l) continue;
-            x[l] -= pp; e[l] = g; e[m] = 0.0;
-        }
-    }
-    for (i = 0; i < n; ++i) w[i] *= w[i];
 }
 
 /* The mixture rule of mf__gtr_lambda for gamma and alpha a (see there) into
@@ -497,7 +454,7 @@ MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19])
  * Normals facing away from w (float rounding at the cap's edge) are drawn
  * again. The first proposal uses (u1, u2), further draws the stream of
  * mf__stream_next; after 64 rejections (probability below 1e-12) the exact
- * numerical inversion of 07_numeric_vndf.h answers. */
+ * numerical inversion of 05_numeric_vndf.h answers. */
 MF_INLINE mf_vec3 mf__gtr_ggx(mf_real a, int vis, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real q = MF_R(1.0) - u1;

@@ -12,7 +12,7 @@
  * given 1 - x unrounded); NDF sampling by the closed-form inverse CDF;
  * visible normals by exact rejection from GGX or from an exact GGX mixture
  * (mf__student_t_sample_visible), falling back on the exact numerical
- * inversion of 07_numeric_vndf.h. Everything but the constructor is cold. */
+ * inversion of 05_numeric_vndf.h. Everything but the constructor is cold. */
 /* @decl */
 typedef struct mf_ndf_student_t {
     mf_real gamma;      /* in [MF_STUDENT_T_GAMMA_MIN, MF_STUDENT_T_GAMMA_MAX] */
@@ -50,14 +50,14 @@ MF_INLINE mf_ndf mf__student_t_family(mf_real alpha, mf_real gamma)
     return mf_student_t(alpha, alpha, gamma);
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion the numerical visible-normal sampler uses (07_numeric_vndf.h). */
+ * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h). */
 MF_COLD mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__student_t_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);
 MF_COLD mf_real mf__student_t_tan2(const mf_ndf *d, mf_real t, mf_real q);
 MF_COLD mf_real mf__student_t_tail(const mf_ndf *d, mf_real tan2);
-/* Exponent p of the numerical sampler's substitution (07_numeric_vndf.h): it
+/* Exponent p of the numerical sampler's substitution (05_numeric_vndf.h): it
  * must cancel the tail tan(theta) ~ q^-beta, beta = 1/(2 gamma - 2), p = 2 / (1 - beta). */
 MF_INLINE mf_real mf__student_t_vndf_p(const mf_ndf *d)
 {
@@ -174,7 +174,7 @@ MF_COLD mf_vec3 mf__student_t_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
  *   b = (g-1)/eps^2 (normals within ~eps alpha of the horizon) are drawn at
  *   that b.
  * Further draws come from mf__stream_next; after 64 rejections (probability
- * below 1e-10) the exact numerical inversion of 07_numeric_vndf.h answers. */
+ * below 1e-10) the exact numerical inversion of 05_numeric_vndf.h answers. */
 MF_COLD mf_vec3 mf__student_t_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {
     mf_real g = d->p.student_t.gamma, g1 = g - MF_R(1.0), ax = d->ax, ay = d->ay;

@@ -14,7 +14,7 @@
  *   GTR, Student-t  exact rejection from GGX's VNDF or from an exact
  *             mixture of GGX lobes (mf__gtr_sample_visible,
  *             mf__student_t_sample_visible), the exact numerical inversion
- *             (07_numeric_vndf.h) as the fallback; their NDF sampling is the
+ *             (05_numeric_vndf.h) as the fallback; their NDF sampling is the
  *             closed-form inverse CDF. */
 
 /* Random numbers: every sampler takes u in [0, 1] inclusive. 1 is read as
@@ -58,7 +58,7 @@ MF_FORCE_INLINE mf_vec3 mf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1
 /* Visible normals as a smooth function of (u1, u2), for quadrature over the
  * unit square (albedo tables, LTC fits): the rejection samplers of GTR and
  * Student-t jump with (u1, u2), so those kinds take the exact numerical
- * inversion (07_numeric_vndf.h, microseconds) here; every other kind is
+ * inversion (05_numeric_vndf.h, microseconds) here; every other kind is
  * mf_sample_visible. */
 MF_INLINE mf_vec3 mf__sample_visible_smooth(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {

@@ -441,7 +441,7 @@ static void check_weights(const char *name, const mf_real *n, int w, int h, doub
     free(wb);
 }
 
-/* The lists' block lengths (layout in 15_ibm.h): n + 2^k(n) - 1 for a bin
+/* The lists' block lengths (layout in 15_ibm_1_format.h): n + 2^k(n) - 1 for a bin
  * with a stored kd-tree top is strictly increasing in n and gives n back;
  * lengths it skips give no tree (k = 0), which mf_ibm_load refuses at or
  * above MF_IBM_TREE_MIN. Every n up to 2^21, then every 997th up to 2^28

@@ -34,7 +34,7 @@ static double density(mf_vec3 m, void *p)
 static double worst_z = -1e9;
 
 /* 1: GTR and Student-t visible normals from the exact numerical inversion
- * (07_numeric_vndf.h) the rejection samplers fall back on */
+ * (05_numeric_vndf.h) the rejection samplers fall back on */
 static int numeric_vndf;
 
 static mf_vec3 draw(const mf_ndf *d, mf_vec3 v, int visible, mft_rng *r)

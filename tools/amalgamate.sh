@@ -26,6 +26,15 @@
 # precision-tagged symbol name (see MF__SYM in 01_config.h), listed where
 # 01_config.h holds the line "/* @symbols */". Needs only sh and awk.
 #
+#   sh tools/amalgamate.sh --ordered > ordered.h   (module by module)
+#
+# --ordered prints the code module by module instead: every @decl part first
+# (as in the header: the kinds' parameter structs that the mf_ndf type of
+# 05_ndf.h holds), then each module's @api, @cold and @impl parts in turn,
+# after a line "/* @module src/NN_name.h */", with no section guards.
+# tools/prefix_check.sh (run by `make header`) compiles it: a module that uses
+# a later one fails there, named.
+#
 #   sh tools/amalgamate.sh --readme > README.md.tmp   (also run by `make header`)
 #   sh tools/amalgamate.sh --api > docs/API.md          (likewise)
 #
@@ -38,6 +47,8 @@
 set -e
 cd "$(dirname "$0")/.."
 files=$(ls src/[0-9]*.h | LC_ALL=C sort)
+ordered=0
+if [ "${1:-}" = --ordered ]; then ordered=1; shift; fi
 if [ "${1:-}" = --api ]; then
     awk -f tools/api_index.awk $files
     exit
@@ -56,11 +67,11 @@ if [ "${1:-}" = --readme ]; then
     }' - README.md
     exit
 fi
-awk '
+awk -v ordered="$ordered" '
 function emit(s) { printf "%s", s }
 function close_guard() { if (guard != "") for (p in open_) if (open_[p]) { buf[p] = buf[p] "#endif /* " guard " */\n"; open_[p] = 0 } }
 FNR == 1 {
-    close_guard(); guard = ""
+    close_guard(); guard = ""; ++nfile
     if ($0 ~ /^\/\* @optional MF_NO_[A-Z_]+ \*\/$/) { guard = $3 }
     part = "api"; base = FILENAME; sub(/^.*\//, "", base)
     names = names " " base
@@ -73,6 +84,7 @@ FNR == 1 {
     if (guard != "" && !open_[part]) { buf[part] = buf[part] "#ifndef " guard "\n"; open_[part] = 1 }
     if (part == "decl" && $0 == "/* @symbols */") { buf[part] = buf[part] "@SYMBOLS@\n"; next }
     buf[part] = buf[part] $0 "\n"
+    if (ordered && part != "decl") mod[nfile, part] = mod[nfile, part] $0 "\n"
     if ((part == "api" || part == "decl") && $0 ~ /^(MFDEF|MF_COLD) [^(]*[ *]mf_[A-Za-z0-9_]+\(/) {
         s = $0; sub(/\(.*/, "", s); sub(/^.*[ *]/, "", s)
         if (!(s in seen)) { seen[s] = 1; syms = syms "#define " s " MF__SYM(" s ")\n" }
@@ -80,6 +92,16 @@ FNR == 1 {
 }
 END {
     close_guard()
+    if (ordered) {
+        n = split(names, list, " ")
+        d = buf["decl"]; sub(/@SYMBOLS@\n/, syms, d)
+        emit(d)
+        for (i = 1; i <= n; ++i) {
+            if (list[i] ~ /^(00|99)_/) continue
+            emit("/* @module src/" list[i] " */\n" mod[i, "api"] mod[i, "cold"] mod[i, "impl"])
+        }
+        exit
+    }
     emit("/* microfacet.h - GENERATED FILE, do not edit: edit the module sources in\n")
     emit(" * src/ and run `make header` (tools/amalgamate.sh). Assembled from:\n")
     n = split(names, list, " ")

@@ -1,11 +1,14 @@
 /* ======================================================================== */
-/* == 7. Numerical visible-normal sampling of the heavy-tailed kinds        */
+/* == 5b. Numerical visible-normal sampling of the heavy-tailed kinds       */
 /* ======================================================================== */
 /* An exact inversion of the distribution of visible normals for isotropic
  * kinds known through their NDF-sampling CDF (GTR, Student-t; the fallback of
  * their rejection samplers after 64 proposals, and under test): the marginal
  * of the D-cos mass by Gauss-Legendre panels, the azimuth given theta in
- * closed form (see mf__iso_sample_visible). Cold. */
+ * closed form (see mf__iso_sample_visible). Cold. It precedes the kinds,
+ * which fall back on it, and reaches their CDF through the trait ISO
+ * (mf__ndf_iso_tan2 and the others, declared in 05_ndf.h, defined with the
+ * dispatch in 07_ndf_dispatch.h): no module circle. */
 /* @api */
 /* wm with density D_w(wm) for the view w of any length (w.z >= 0), of the
  * kind d stretched by (ax, ay) (GTR: 1, 1; Student-t: its roughness). */
