@@ -11,7 +11,7 @@ TEST_SRC := tests/main.c tests/quad.c tests/test_core.c tests/test_ndf.c tests/t
             tests/test_brdf.c tests/test_ltmd.c tests/test_ltc.c tests/test_ltc_shapes.c tests/test_leadr.c \
             tests/test_tabulated.c tests/test_ibm.c tests/test_microsurface.c \
             tests/test_materials.c tests/test_dielectric.c tests/test_energy.c tests/test_robust.c tests/test_samplers.c tests/test_float.c tests/test_tu2.c \
-            tests/test_fuzzfound.c tests/test_lobes.c
+            tests/test_fuzzfound.c tests/test_lobes.c tests/test_sheen.c
 HAVE_CLANG := $(shell command -v clang >/dev/null 2>&1 && echo yes)
 HAVE_NVCC  := $(shell command -v nvcc >/dev/null 2>&1 && echo yes)
 # OpenEXR is optional (apt-get install libopenexr-dev): found through
@@ -32,7 +32,7 @@ endif
 
 .PHONY: fuzz fuzz-smoke fuzz-build fastmath-check
 .PHONY: all test check test-c test-cpp test-double test-float warnings asan bench bench-inline demo install clean cuda-check cuda-run \
-        header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
+        header header-check config-check package-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table sheen-table tools \
         $(foreach s,header api kinds history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
@@ -77,6 +77,14 @@ ltc-table-beckmann: | $(BUILD)
 energy-table: | $(BUILD)
 	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/energy_fit.c -o $(BUILD)/energy_fit -lm
 	./$(BUILD)/energy_fit > src/17_energy_table.h.tmp && mv src/17_energy_table.h.tmp src/17_energy_table.h
+	@$(MAKE) --no-print-directory header
+
+# the built-in volumetric sheen LTC table: simulates the fibre layer and
+# fits each entry (about 3 minutes on one core); reproduces the shipped
+# src/22_sheen_table.h byte for byte (fixed seeds)
+sheen-table: | $(BUILD)
+	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/sheen_fit.c -o $(BUILD)/sheen_fit -lm
+	./$(BUILD)/sheen_fit > src/22_sheen_table.h.tmp && mv src/22_sheen_table.h.tmp src/22_sheen_table.h
 	@$(MAKE) --no-print-directory header
 
 $(BUILD):

@@ -202,6 +202,7 @@ int main(int argc, char **argv)
     MFT_RUN(test_dielectric);
     MFT_RUN(test_energy);
     MFT_RUN(test_material_lobes);
+    MFT_RUN(test_sheen);
     MFT_RUN(test_robust);
     MFT_RUN(test_samplers);
     MFT_RUN(test_fuzzfound);

@@ -98,6 +98,7 @@ void test_dielectric(void);
 void test_energy(void);
 void test_fuzzfound(void);
 void test_material_lobes(void);
+void test_sheen(void);
 
 /* The same inline and cold-path computations, compiled in each unit that
  * calls them: test_tu2 compares its own with those of tests/main.c. The
