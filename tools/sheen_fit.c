@@ -8,6 +8,8 @@
  *       also compares with the published table (tizian/ltc-sheen,
  *       fitting/python/data/ltc_table_sheen_volume.cpp, read at run time,
  *       never stored here) and prints the figures on stderr.
+ *   ./sheen_fit --truncate --compare ltc_table_sheen_volume.cpp
+ *       the same for the authors' truncated reference (below); prints no module.
  *
  * The layer (the talk; the authors' code for the numbers): a slab of unit
  * thickness and unit density over a black base, single-scattering albedo 1,
