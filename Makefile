@@ -34,7 +34,7 @@ endif
 
 .PHONY: fuzz fuzz-build check-all api kinds prefix history warnings config fastmath package readme include_cost
 .PHONY: all test check test-c test-cpp asan bench bench-inline demo install clean cuda-check cuda-run \
-        header header-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table tools \
+        header header-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table sheen-table tools \
         $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
@@ -77,6 +77,14 @@ ltc-table-beckmann: | $(BUILD)
 energy-table: | $(BUILD)
 	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/energy_fit.c -o $(BUILD)/energy_fit -lm
 	./$(BUILD)/energy_fit > src/17_energy_table.h.tmp && mv src/17_energy_table.h.tmp src/17_energy_table.h
+	@$(MAKE) --no-print-directory header
+
+# the built-in volumetric sheen LTC table: simulates the fibre layer and
+# fits each entry (about 3 minutes on one core); reproduces the shipped
+# src/22_sheen_table.h byte for byte (fixed seeds)
+sheen-table: | $(BUILD)
+	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/sheen_fit.c -o $(BUILD)/sheen_fit -lm
+	./$(BUILD)/sheen_fit > src/22_sheen_table.h.tmp && mv src/22_sheen_table.h.tmp src/22_sheen_table.h
 	@$(MAKE) --no-print-directory header
 
 $(BUILD):

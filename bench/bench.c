@@ -897,6 +897,7 @@ static const char *const core_sections[] = { "ggx", "kinds", "transformed", "lea
 #define CORE_ALL ((1 << CORE_SECTIONS) - 1)
 static void bench_core(const struct bench_kind *ks, int sections);
 static void bench_lobes(void);
+static void bench_sheen(void);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
 static void bench_ltc_shapes(void);
@@ -1086,6 +1087,10 @@ int main(int argc, char **argv)
         bench_lobes();
         return 0;
     }
+    if (argc > 1 && !strcmp(argv[1], "sheen")) {
+        bench_sheen();
+        return 0;
+    }
     if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
         int sec = 0;
         for (i = 0; i < CORE_SECTIONS; ++i)
@@ -1105,6 +1110,7 @@ int main(int argc, char **argv)
     bench_ibm();
     bench_microsurface();
     bench_lobes();
+    bench_sheen();
     return g_sink == g_sink ? 0 : 1;
 }
 
@@ -1326,4 +1332,19 @@ static void bench_lobes(void)
     printf("bench charlie_kind_lambda %.1f published_fit=%.1f ratio=%.2f\n", to, tb, to / tb);
     run_pair2(b_vndf, &gg, b_vndf, &ch, &tb, &to);
     printf("bench charlie_kind_sample_visible %.1f ggx=%.1f ratio=%.2f\n", to, tb, to / tb);
+}
+
+/* volumetric sheen (table lookup + LTC) against Lambert eval and cosine sampling */
+static double b_sheen(const mf_ndf *d) { (void)d; LOOP(mf_sheen_brdf(g_wo[i], g_wi[i], g_u1[i])); }
+static double b_sheen_sample(const mf_ndf *d) { (void)d; LOOP(mf_sheen_sample(g_wo[i], g_u1[i], g_u1[i], g_u2[i]).weight); }
+static double b_sheen_pdf(const mf_ndf *d) { (void)d; LOOP(mf_sheen_pdf(g_wo[i], g_wi[i], g_u1[i])); }
+static void bench_sheen(void)
+{
+    double tb, to;
+    run_pair(b_lambert, b_sheen, NULL, &tb, &to);
+    printf("bench sheen_brdf %.2f lambert=%.2f ratio=%.2f\n", to, tb, to / tb);
+    run_pair(b_cos_sample, b_sheen_sample, NULL, &tb, &to);
+    printf("bench sheen_sample %.2f cosine=%.2f ratio=%.2f\n", to, tb, to / tb);
+    run_pair(b_cos_pdf, b_sheen_pdf, NULL, &tb, &to);
+    printf("bench sheen_pdf %.2f cosine=%.2f ratio=%.2f\n", to, tb, to / tb);
 }

@@ -278,7 +278,8 @@ typedef float mf_real;
 /* Module opt-outs (define before including, the same in every file):
  *   MF_NO_LEADR        LEADR moments and maps (the non-centered Beckmann kind
  *                      of mf_ndf stays)
- *   MF_NO_LTC_TABLE    the built-in GGX LTC table and its accessors
+ *   MF_NO_LTC_TABLE    the built-in LTC tables (GGX, Beckmann, volumetric
+ *                      sheen) and their accessors
  *   MF_NO_IBM          the Inverse Bin Map
  *   MF_NO_MICROSURFACE microsurface generation and the gonioreflectometer */
 

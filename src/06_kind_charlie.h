@@ -8,7 +8,7 @@
  * unit-roughness form (trait ISO 1, not 2; anisotropy only through
  * mf_transformed). Exact Smith Lambda (mf__charlie_lambda_k), NDF sampling in
  * closed form, visible normals by the exact numerical inversion of
- * 07_numeric_vndf.h through the closed-form NDF-cos CDF: the D-cos mass of
+ * 05_numeric_vndf.h through the closed-form NDF-cos CDF: the D-cos mass of
  * theta_m < theta is sin^{k+2}(theta), k = 1/alpha. The standalone functions
  * of 21_sheen.h (mf_charlie_D, mf_charlie_lambda, mf_charlie_sample_D) call
  * the helpers here. Everything but the constructor and the D and sampling
@@ -77,7 +77,7 @@ MF_INLINE mf_vec3 mf__charlie_sample_D_k(mf_real k, mf_real u1, mf_real u2)
  * length, |w.z| used, MF_BIG at w.z = 0, 0 for non-finite w. */
 MF_COLD mf_real mf__charlie_lambda_k(mf_real k, mf_vec3 w);
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
- * inversion of the numerical visible-normal sampler (07_numeric_vndf.h). */
+ * inversion of the numerical visible-normal sampler (05_numeric_vndf.h). */
 MF_COLD mf_real mf__charlie_D(const mf_ndf *d, mf_vec3 wm);
 MF_COLD mf_real mf__charlie_lambda(const mf_ndf *d, mf_vec3 w);
 MF_COLD mf_vec3 mf__charlie_sample_D(const mf_ndf *d, mf_real u1, mf_real u2);
@@ -95,7 +95,7 @@ MF_COLD mf_vec3 mf__charlie_sample_D(const mf_ndf *d, mf_real u1, mf_real u2)
     return mf__charlie_sample_D_k(d->p.charlie.k, u1, u2);
 }
 
-/* Visible normals: the exact numerical inversion (07_numeric_vndf.h) of the
+/* Visible normals: the exact numerical inversion (05_numeric_vndf.h) of the
  * kind's own D (trait ISO 1, unstretched). */
 MF_COLD mf_vec3 mf__charlie_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2)
 {

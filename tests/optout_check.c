@@ -24,6 +24,7 @@ int main(void)
 #ifndef MF_NO_LTC_TABLE
     mf_ltc l = mf_ltc_ggx(MF_R(0.5), MF_R(0.3));
     f += mf_ltc_eval(&l, wo);
+    f += mf_sheen_brdf(wo, wi, MF_R(0.5));
 #endif
 #ifndef MF_NO_LEADR
     f += mf_leadr_specular(mf_leadr_with_roughness(mf_leadr_from_slope(MF_R(0.1), MF_R(0.0)), MF_R(0.2), MF_R(0.2)), wo, wi);

@@ -252,6 +252,8 @@ int main(void)
         s += mf_charlie_D(MF_R(0.4), wo) + mf_charlie_lambda(MF_R(0.4), wo) + mf_charlie_lambda_fit(MF_R(0.4), wo);
         s += mf_charlie_sample_D(MF_R(0.4), MF_R(0.3), MF_R(0.6)).z;
         { mf_ndf ch = mf_charlie(MF_R(0.4)); s += mf_lambda(&ch, wo) + mf_sample_visible(&ch, wo, MF_R(0.3), MF_R(0.6)).z; }
+        s += mf_sheen_brdf(wo, wi, MF_R(0.5)) + mf_sheen_pdf(wo, wi, MF_R(0.5)) + mf_sheen_sample(wo, MF_R(0.5), MF_R(0.3), MF_R(0.6)).weight;
+        s += mf_sheen_albedo(wo.z, MF_R(0.5));
     }
 #ifndef MF_NO_DEPRECATED
     /* the deprecated 0.3 names still compile and run (warnings off here only) */

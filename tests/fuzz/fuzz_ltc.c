@@ -1,8 +1,8 @@
 /* Fuzz target: LTC with arbitrary matrices and polygons (NaN, Inf, huge,
  * repeated and self-intersecting vertices): mf_ltc_from_matrix,
  * mf_ltc_from_inverse, eval, sample, mf_ltc_integrate, the polygon form
- * factors, the table lookups and the light shapes (ellipses, disks, lines,
- * tubes, textured quads). */
+ * factors, the table lookups (the volumetric sheen's too) and the light
+ * shapes (ellipses, disks, lines, tubes, textured quads). */
 #include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -47,5 +47,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (i = 0; i < 9; ++i) FZ_FIN(l.Minv[i], "ggx Minv");
     FZ_NONNEG(mf_ltc_meso_alpha(a), "meso_alpha");
     FZ_NONNEG(mf_ltc_combined_alpha(a, b), "combined_alpha");
+    /* the volumetric sheen table: arbitrary view and roughness */
+    FZ_NONNEG(mf_sheen_albedo(a, b), "sheen_albedo");
+    {
+        mf_vec3 wo = mf_normalize(mf_vec3_make(fz_real(&in), fz_real(&in), fz_real(&in)));
+        mf_sample r = mf_sheen_sample(wo, a, fz_unit(&in), fz_unit(&in));
+        FZ_SAMPLE(r, "sheen_sample");
+        FZ_NONNEG(mf_sheen_brdf(wo, w, a), "sheen_brdf");
+        FZ_NONNEG(mf_sheen_pdf(wo, w, a), "sheen_pdf");
+        if (r.lobe != MF_LOBE_NONE && !(mf_sheen_pdf(wo, r.wi, a) > 0)) FZ_FAIL("%s", "sheen_sample: pdf of the sample is 0");
+    }
     return 0;
 }
