@@ -100,10 +100,10 @@
  *      modules 1-5b and the kinds whose files sort before its own, nothing
  *      later (tools/prefix_check.sh, run by `make header`, checks it);
  *      07_ndf_dispatch.h then reaches it through its traits by itself.
- *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
+ *   2. Add its line X(NAME, name, INL, CEN, ISO, TR, ETAB, AXES, PREP) to
  *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
  *      front ends inline, whether its mean slope is 0, which numerical
- *      sampler, LTC family, Trowbridge-Reitz forms, energy table, isotropy
+ *      sampler, Trowbridge-Reitz forms, energy table, isotropy
  *      at ax = ay, built object), and each trait names the functions the
  *      module must then define (05_ndf.h lists them). Other modules never
  *      test a kind by name; they ask its traits (tests/kind_names_check.sh,
@@ -1333,7 +1333,7 @@ typedef unsigned long long mf_u64;
  * (MF_NDF_BECKMANN = 0, MF_NDF_GGX, MF_NDF_GTR, MF_NDF_STUDENT_T, MF_NDF_LEADR
  * = the non-centered Beckmann of LEADR moments, MF_NDF_TABULATED,
  * MF_NDF_CHARLIE = the sheen of Estevez & Kulla 2017). Each line
- * X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) is one module
+ * X(NAME, name, INL, CEN, ISO, TR, ETAB, AXES, PREP) is one module
  * src/06_kind_<name>.h, which defines
  *   - its parameter struct mf_ndf_<name> (part @decl), stored in mf_ndf.p.<name>,
  *     at most 32 bytes in float (a pointer and six mf_real), so that mf_ndf
@@ -1370,9 +1370,6 @@ typedef unsigned long long mf_u64;
  *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
  *          The kind defines mf__<name>_tan2(d, t, q), mf__<name>_tail(d, tan2)
  *          and mf__<name>_vndf_p(d) (see 05_numeric_vndf.h).
- *     LTC  1: mf_ltc_table_build fits the kind's family of one roughness
- *          alpha and one shape gamma; the kind defines
- *          mf_ndf mf__<name>_family(mf_real alpha, mf_real gamma).
  *     TR   1: Trowbridge-Reitz closed forms hold, 1 + Lambda(w) =
  *          |(ax w.x, ay w.y, w.z)| / (2 w.z) (one-division G2, the bounded
  *          visible-normal sampler of 11_brdf.h).
@@ -1388,22 +1385,22 @@ typedef unsigned long long mf_u64;
  * cold kind such as 06_kind_student_t.h), add its line here, and test it the
  * way tests/test_ndf.c tests the others. */
 #define MF__NDF_KINDS(X) \
-    X(BECKMANN,  beckmann,  1, 1, 0, 1, 0, 2, 1, 0) \
-    X(GGX,       ggx,       2, 1, 0, 1, 1, 1, 1, 0) \
-    X(GTR,       gtr,       0, 1, 1, 1, 0, 0, 1, 1) \
-    X(STUDENT_T, student_t, 0, 1, 2, 1, 0, 0, 1, 0) \
-    X(LEADR,     leadr,     0, 0, 0, 0, 0, 0, 0, 0) \
-    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0, 0) \
-    X(CHARLIE,   charlie,   0, 1, 1, 1, 0, 0, 1, 0)
+    X(BECKMANN,  beckmann,  1, 1, 0, 0, 2, 1, 0) \
+    X(GGX,       ggx,       2, 1, 0, 1, 1, 1, 0) \
+    X(GTR,       gtr,       0, 1, 1, 0, 0, 1, 1) \
+    X(STUDENT_T, student_t, 0, 1, 2, 0, 0, 1, 0) \
+    X(LEADR,     leadr,     0, 0, 0, 0, 0, 0, 0) \
+    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0) \
+    X(CHARLIE,   charlie,   0, 1, 1, 0, 0, 1, 0)
 
-#define MF__NDF_ENUM(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF_NDF_##N,
+#define MF__NDF_ENUM(N, n, inl, cen, iso, tr, et, ax, pp) MF_NDF_##N,
 typedef enum mf_ndf_type { MF__NDF_KINDS(MF__NDF_ENUM) MF_NDF_KIND_COUNT } mf_ndf_type;
 #undef MF__NDF_ENUM
 
 /* A distribution: 64 bytes in float, 128 in double (tests/test_ndf.c checks
  * them). M^-1 is not stored: mf__ndf_Minv derives it from M and 1 / det M
  * (four products), mf__ndf_det |det M| from M. */
-#define MF__NDF_PARAMS(N, n, inl, cen, iso, ltc, tr, et, ax, pp) mf_ndf_##n n;
+#define MF__NDF_PARAMS(N, n, inl, cen, iso, tr, et, ax, pp) mf_ndf_##n n;
 typedef struct mf_ndf {
     unsigned char type;         /* mf_ndf_type */
     unsigned char transformed;  /* 1 when M (below) is not the identity */
@@ -1432,21 +1429,18 @@ typedef struct mf_ndf {
 #define MF__INL2_2(s) s
 
 /* The traits of kind t (an mf_ndf.type); an unknown kind has none. */
-#define MF__NDF_OR_KNOWN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) || t == MF_NDF_##N
-#define MF__NDF_OR_TILTED(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IFNOT##cen(|| t == MF_NDF_##N)
-#define MF__NDF_OR_TR(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##tr(|| t == MF_NDF_##N)
-#define MF__NDF_OR_LTC(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(|| t == MF_NDF_##N)
-#define MF__NDF_OR_AXES(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ax(|| t == MF_NDF_##N)
-#define MF__NDF_IF_ISO(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(if (t == MF_NDF_##N) return iso;)
-#define MF__NDF_IF_ETAB(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##et(if (t == MF_NDF_##N) return et;)
+#define MF__NDF_OR_KNOWN(N, n, inl, cen, iso, tr, et, ax, pp) || t == MF_NDF_##N
+#define MF__NDF_OR_TILTED(N, n, inl, cen, iso, tr, et, ax, pp) MF__IFNOT##cen(|| t == MF_NDF_##N)
+#define MF__NDF_OR_TR(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##tr(|| t == MF_NDF_##N)
+#define MF__NDF_OR_AXES(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##ax(|| t == MF_NDF_##N)
+#define MF__NDF_IF_ISO(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(if (t == MF_NDF_##N) return iso;)
+#define MF__NDF_IF_ETAB(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##et(if (t == MF_NDF_##N) return et;)
 /* 1 for the kinds of MF__NDF_KINDS */
 MF_FORCE_INLINE int mf__ndf_known(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_KNOWN); }
 /* 1 if the mean slope may be nonzero (CEN 0) */
 MF_FORCE_INLINE int mf__ndf_tilted(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_TILTED); }
 /* 1 where the Trowbridge-Reitz closed forms hold (TR) */
 MF_FORCE_INLINE int mf__ndf_tr(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_TR); }
-/* 1 for the families mf_ltc_table_build fits (LTC) */
-MF_FORCE_INLINE int mf__ndf_ltc(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_LTC); }
 /* 1 if ax = ay makes the untransformed kind isotropic (AXES) */
 MF_FORCE_INLINE int mf__ndf_axes(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_AXES); }
 /* the numerical visible-normal inversion of the kind (ISO): 0, 1 or 2 */
@@ -1456,7 +1450,6 @@ MF_FORCE_INLINE int mf__ndf_energy_table(int t) { MF__NDF_KINDS(MF__NDF_IF_ETAB)
 #undef MF__NDF_OR_KNOWN
 #undef MF__NDF_OR_TILTED
 #undef MF__NDF_OR_TR
-#undef MF__NDF_OR_LTC
 #undef MF__NDF_OR_AXES
 #undef MF__NDF_IF_ISO
 #undef MF__NDF_IF_ETAB
@@ -1473,7 +1466,7 @@ MF_FORCE_INLINE mf_real mf__ndf_det(const mf_ndf *d) { return MF_FABS(mf_mat2_de
 /* A distribution made fast for a long computation (trait PREP): the copy
  * and the built object it refers to; mf__ndf_prepare returns d itself, or
  * p->d. p must outlive the use of the result. */
-#define MF__NDF_PREP_MEMBER(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(mf_##n##_table n;)
+#define MF__NDF_PREP_MEMBER(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##pp(mf_##n##_table n;)
 typedef struct mf__ndf_prep {
     mf_ndf d;
     union { char none; MF__NDF_KINDS(MF__NDF_PREP_MEMBER) } s;
@@ -1580,7 +1573,7 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
 /* The front ends' dispatch: the kinds of INL 2, then those of INL 1, inline,
  * then the cold dispatch. The inline kinds' functions, defined in their
  * modules (06), are declared here. */
-#define MF__NDF_INL_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##inl( \
+#define MF__NDF_INL_DECL(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##inl( \
     MF_FORCE_INLINE mf_real mf__##n##_D(const mf_ndf *d, mf_vec3 wm); \
     MF_FORCE_INLINE mf_real mf__##n##_lambda(const mf_ndf *d, mf_vec3 w); \
     MF_FORCE_INLINE mf_vec3 mf__##n##_sample_D(const mf_ndf *d, mf_real u1, mf_real u2); \
@@ -1590,16 +1583,16 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
     MF_FORCE_INLINE mf_vec3 mf__##n##_sample_visible_dir(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);)
 MF__NDF_KINDS(MF__NDF_INL_DECL)
 #undef MF__NDF_INL_DECL
-#define MF__NDF_TRY_D2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
-#define MF__NDF_TRY_D1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
-#define MF__NDF_TRY_L2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
-#define MF__NDF_TRY_L1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
-#define MF__NDF_TRY_S2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
-#define MF__NDF_TRY_S1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
-#define MF__NDF_TRY_SD2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
-#define MF__NDF_TRY_SD1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
-#define MF__NDF_TRY_V2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible(d, w, u1, u2);)
-#define MF__NDF_TRY_VD2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible_dir(d, w, u1, u2);)
+#define MF__NDF_TRY_D2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
+#define MF__NDF_TRY_D1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
+#define MF__NDF_TRY_L2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
+#define MF__NDF_TRY_L1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
+#define MF__NDF_TRY_S2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
+#define MF__NDF_TRY_S1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
+#define MF__NDF_TRY_SD2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
+#define MF__NDF_TRY_SD1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
+#define MF__NDF_TRY_V2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible(d, w, u1, u2);)
+#define MF__NDF_TRY_VD2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible_dir(d, w, u1, u2);)
 /* D of the untransformed distribution (homogeneous of degree -4 in wm) */
 MF_FORCE_INLINE mf_real mf__ndf_D_inline(const mf_ndf *d, mf_vec3 wm)
 {
@@ -1637,9 +1630,9 @@ MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_dir_inline(const mf_ndf *d, mf_ve
 }
 /* The mean slope of the untransformed distribution: (0, 0) for the centred
  * kinds (CEN 1) and unknown ones; inline (the front ends test CEN first). */
-#define MF__NDF_MEAN_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+#define MF__NDF_MEAN_DECL(N, n, inl, cen, iso, tr, et, ax, pp) \
     MF__IFNOT##cen(MF_FORCE_INLINE void mf__##n##_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);)
-#define MF__NDF_TRY_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+#define MF__NDF_TRY_MEAN(N, n, inl, cen, iso, tr, et, ax, pp) \
     MF__IFNOT##cen(if (d->type == MF_NDF_##N) { mf__##n##_mean_slope(d, mx, my); return; })
 MF__NDF_KINDS(MF__NDF_MEAN_DECL)
 MF_FORCE_INLINE void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)
@@ -1763,12 +1756,6 @@ MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, 
 {
     return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
 }
-/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__beckmann_family(mf_real alpha, mf_real gamma)
-{
-    (void)gamma;
-    return mf_beckmann(alpha, alpha);
-}
 /* ======================================================================== */
 /* == 6. Distribution kinds: Charlie sheen                                  */
 /* ======================================================================== */
@@ -1800,12 +1787,6 @@ MF_INLINE mf_ndf mf_charlie(mf_real alpha)
     mf_ndf d = mf__ndf_init(MF_NDF_CHARLIE, MF_R(1.0) / k, MF_R(1.0) / k);
     d.p.charlie.k = k;
     return d;
-}
-/* the member of the LTC family (05_ndf.h, trait LTC): one roughness, gamma unused */
-MF_INLINE mf_ndf mf__charlie_family(mf_real alpha, mf_real gamma)
-{
-    (void)gamma;
-    return mf_charlie(alpha);
 }
 /* D for k = 1/alpha (Eq. 2), homogeneous of degree -4 in wm: (2 + k)
  * sin^k / (2 pi |wm|^4) with sin^2 = (x^2 + y^2) / |wm|^2; 0 for wm.z <= 0 and
@@ -1951,12 +1932,6 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible_dir(const mf_ndf *d, mf_vec3 w, m
 {
     return mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
 }
-/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__ggx_family(mf_real alpha, mf_real gamma)
-{
-    (void)gamma;
-    return mf_ggx(alpha, alpha);
-}
 /* ======================================================================== */
 /* == 6. Distribution kinds: GTR                                            */
 /* ======================================================================== */
@@ -2031,11 +2006,6 @@ MF_INLINE mf_ndf mf_gtr_table_ndf(const mf_gtr_table *t)
     d = mf_gtr(t->alpha, t->gamma);
     d.p.gtr.tab = t;
     return d;
-}
-/* the member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
-{
-    return mf_gtr(alpha, gamma);
 }
 
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
@@ -2149,11 +2119,6 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
     }
     mf__student_t_sampler_init(&d.p.student_t);
     return d;
-}
-/* the member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__student_t_family(mf_real alpha, mf_real gamma)
-{
-    return mf_student_t(alpha, alpha, gamma);
 }
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
  * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h). */
@@ -7148,10 +7113,10 @@ MF_COLD mf_vec3 mf__tabulated_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real
      * and atan2 must give the D lookup an angle below the last node */
     return mf_normalize(mf_vec3_make(sn * (cp * cps - sp * sps), sn * (sp * cps + cp * sps), mf_max(MF_COS(th), MF_R(8.0) * MF_EPS)));
 }
-#define MF__NDF_CASE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
-#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
-#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
-#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
+#define MF__NDF_CASE_D(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
+#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
+#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
+#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
@@ -7180,7 +7145,7 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
 }
-#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
+#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
 MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
 {
     switch (d->type) {
@@ -7198,9 +7163,9 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
  * in 05_ndf.h): tan^2 at mass t from the pole (q = 1 - t beyond), the mass
  * beyond tan2, and the exponent p of the sampler's substitution; unknown kinds
  * give 0, 0 and 4. */
-#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
-#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
-#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
+#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
+#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
+#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
 MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
 {
     switch (d->type) {
@@ -7226,17 +7191,6 @@ MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d)
 #undef MF__NDF_CASE_TAIL
 #undef MF__NDF_CASE_VNDF_P
 
-/* The member (alpha, gamma) of the family of kind `kind` (LTC 1) in *out, 1;
- * 0 for any other kind (out untouched). */
-#define MF__NDF_CASE_FAMILY(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(case MF_NDF_##N: *out = mf__##n##_family(alpha, gamma); return 1;)
-MF_INLINE int mf__ndf_family(int kind, mf_real alpha, mf_real gamma, mf_ndf *out)
-{
-    switch (kind) {
-    MF__NDF_KINDS(MF__NDF_CASE_FAMILY)
-    default: return 0;
-    }
-}
-#undef MF__NDF_CASE_FAMILY
 /* Fresnel averages (section 11): the quadrature. */
 MF_INLINE mf_real mf__fresnel_average(mf_real eta, mf_real k, int conductor)
 {

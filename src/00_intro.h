@@ -87,10 +87,10 @@
  *      modules 1-5b and the kinds whose files sort before its own, nothing
  *      later (tools/prefix_check.sh, run by `make header`, checks it);
  *      07_ndf_dispatch.h then reaches it through its traits by itself.
- *   2. Add its line X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) to
+ *   2. Add its line X(NAME, name, INL, CEN, ISO, TR, ETAB, AXES, PREP) to
  *      MF__NDF_KINDS in src/05_ndf.h: the digits are its traits (what the
  *      front ends inline, whether its mean slope is 0, which numerical
- *      sampler, LTC family, Trowbridge-Reitz forms, energy table, isotropy
+ *      sampler, Trowbridge-Reitz forms, energy table, isotropy
  *      at ax = ay, built object), and each trait names the functions the
  *      module must then define (05_ndf.h lists them). Other modules never
  *      test a kind by name; they ask its traits (tests/kind_names_check.sh,

@@ -27,7 +27,7 @@
  * (MF_NDF_BECKMANN = 0, MF_NDF_GGX, MF_NDF_GTR, MF_NDF_STUDENT_T, MF_NDF_LEADR
  * = the non-centered Beckmann of LEADR moments, MF_NDF_TABULATED,
  * MF_NDF_CHARLIE = the sheen of Estevez & Kulla 2017). Each line
- * X(NAME, name, INL, CEN, ISO, LTC, TR, ETAB, AXES, PREP) is one module
+ * X(NAME, name, INL, CEN, ISO, TR, ETAB, AXES, PREP) is one module
  * src/06_kind_<name>.h, which defines
  *   - its parameter struct mf_ndf_<name> (part @decl), stored in mf_ndf.p.<name>,
  *     at most 32 bytes in float (a pointer and six mf_real), so that mf_ndf
@@ -64,9 +64,6 @@
  *          the kind's own D; 2 of its unit-roughness form, stretched by (ax, ay).
  *          The kind defines mf__<name>_tan2(d, t, q), mf__<name>_tail(d, tan2)
  *          and mf__<name>_vndf_p(d) (see 05_numeric_vndf.h).
- *     LTC  1: mf_ltc_table_build fits the kind's family of one roughness
- *          alpha and one shape gamma; the kind defines
- *          mf_ndf mf__<name>_family(mf_real alpha, mf_real gamma).
  *     TR   1: Trowbridge-Reitz closed forms hold, 1 + Lambda(w) =
  *          |(ax w.x, ay w.y, w.z)| / (2 w.z) (one-division G2, the bounded
  *          visible-normal sampler of 11_brdf.h).
@@ -82,22 +79,22 @@
  * cold kind such as 06_kind_student_t.h), add its line here, and test it the
  * way tests/test_ndf.c tests the others. */
 #define MF__NDF_KINDS(X) \
-    X(BECKMANN,  beckmann,  1, 1, 0, 1, 0, 2, 1, 0) \
-    X(GGX,       ggx,       2, 1, 0, 1, 1, 1, 1, 0) \
-    X(GTR,       gtr,       0, 1, 1, 1, 0, 0, 1, 1) \
-    X(STUDENT_T, student_t, 0, 1, 2, 1, 0, 0, 1, 0) \
-    X(LEADR,     leadr,     0, 0, 0, 0, 0, 0, 0, 0) \
-    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0, 0) \
-    X(CHARLIE,   charlie,   0, 1, 1, 1, 0, 0, 1, 0)
+    X(BECKMANN,  beckmann,  1, 1, 0, 0, 2, 1, 0) \
+    X(GGX,       ggx,       2, 1, 0, 1, 1, 1, 0) \
+    X(GTR,       gtr,       0, 1, 1, 0, 0, 1, 1) \
+    X(STUDENT_T, student_t, 0, 1, 2, 0, 0, 1, 0) \
+    X(LEADR,     leadr,     0, 0, 0, 0, 0, 0, 0) \
+    X(TABULATED, tabulated, 0, 1, 0, 0, 0, 0, 0) \
+    X(CHARLIE,   charlie,   0, 1, 1, 0, 0, 1, 0)
 
-#define MF__NDF_ENUM(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF_NDF_##N,
+#define MF__NDF_ENUM(N, n, inl, cen, iso, tr, et, ax, pp) MF_NDF_##N,
 typedef enum mf_ndf_type { MF__NDF_KINDS(MF__NDF_ENUM) MF_NDF_KIND_COUNT } mf_ndf_type;
 #undef MF__NDF_ENUM
 
 /* A distribution: 64 bytes in float, 128 in double (tests/test_ndf.c checks
  * them). M^-1 is not stored: mf__ndf_Minv derives it from M and 1 / det M
  * (four products), mf__ndf_det |det M| from M. */
-#define MF__NDF_PARAMS(N, n, inl, cen, iso, ltc, tr, et, ax, pp) mf_ndf_##n n;
+#define MF__NDF_PARAMS(N, n, inl, cen, iso, tr, et, ax, pp) mf_ndf_##n n;
 typedef struct mf_ndf {
     unsigned char type;         /* mf_ndf_type */
     unsigned char transformed;  /* 1 when M (below) is not the identity */
@@ -126,21 +123,18 @@ typedef struct mf_ndf {
 #define MF__INL2_2(s) s
 
 /* The traits of kind t (an mf_ndf.type); an unknown kind has none. */
-#define MF__NDF_OR_KNOWN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) || t == MF_NDF_##N
-#define MF__NDF_OR_TILTED(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IFNOT##cen(|| t == MF_NDF_##N)
-#define MF__NDF_OR_TR(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##tr(|| t == MF_NDF_##N)
-#define MF__NDF_OR_LTC(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(|| t == MF_NDF_##N)
-#define MF__NDF_OR_AXES(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ax(|| t == MF_NDF_##N)
-#define MF__NDF_IF_ISO(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(if (t == MF_NDF_##N) return iso;)
-#define MF__NDF_IF_ETAB(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##et(if (t == MF_NDF_##N) return et;)
+#define MF__NDF_OR_KNOWN(N, n, inl, cen, iso, tr, et, ax, pp) || t == MF_NDF_##N
+#define MF__NDF_OR_TILTED(N, n, inl, cen, iso, tr, et, ax, pp) MF__IFNOT##cen(|| t == MF_NDF_##N)
+#define MF__NDF_OR_TR(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##tr(|| t == MF_NDF_##N)
+#define MF__NDF_OR_AXES(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##ax(|| t == MF_NDF_##N)
+#define MF__NDF_IF_ISO(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(if (t == MF_NDF_##N) return iso;)
+#define MF__NDF_IF_ETAB(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##et(if (t == MF_NDF_##N) return et;)
 /* 1 for the kinds of MF__NDF_KINDS */
 MF_FORCE_INLINE int mf__ndf_known(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_KNOWN); }
 /* 1 if the mean slope may be nonzero (CEN 0) */
 MF_FORCE_INLINE int mf__ndf_tilted(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_TILTED); }
 /* 1 where the Trowbridge-Reitz closed forms hold (TR) */
 MF_FORCE_INLINE int mf__ndf_tr(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_TR); }
-/* 1 for the families mf_ltc_table_build fits (LTC) */
-MF_FORCE_INLINE int mf__ndf_ltc(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_LTC); }
 /* 1 if ax = ay makes the untransformed kind isotropic (AXES) */
 MF_FORCE_INLINE int mf__ndf_axes(int t) { return 0 MF__NDF_KINDS(MF__NDF_OR_AXES); }
 /* the numerical visible-normal inversion of the kind (ISO): 0, 1 or 2 */
@@ -150,7 +144,6 @@ MF_FORCE_INLINE int mf__ndf_energy_table(int t) { MF__NDF_KINDS(MF__NDF_IF_ETAB)
 #undef MF__NDF_OR_KNOWN
 #undef MF__NDF_OR_TILTED
 #undef MF__NDF_OR_TR
-#undef MF__NDF_OR_LTC
 #undef MF__NDF_OR_AXES
 #undef MF__NDF_IF_ISO
 #undef MF__NDF_IF_ETAB
@@ -167,7 +160,7 @@ MF_FORCE_INLINE mf_real mf__ndf_det(const mf_ndf *d) { return MF_FABS(mf_mat2_de
 /* A distribution made fast for a long computation (trait PREP): the copy
  * and the built object it refers to; mf__ndf_prepare returns d itself, or
  * p->d. p must outlive the use of the result. */
-#define MF__NDF_PREP_MEMBER(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(mf_##n##_table n;)
+#define MF__NDF_PREP_MEMBER(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##pp(mf_##n##_table n;)
 typedef struct mf__ndf_prep {
     mf_ndf d;
     union { char none; MF__NDF_KINDS(MF__NDF_PREP_MEMBER) } s;
@@ -274,7 +267,7 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
 /* The front ends' dispatch: the kinds of INL 2, then those of INL 1, inline,
  * then the cold dispatch. The inline kinds' functions, defined in their
  * modules (06), are declared here. */
-#define MF__NDF_INL_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##inl( \
+#define MF__NDF_INL_DECL(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##inl( \
     MF_FORCE_INLINE mf_real mf__##n##_D(const mf_ndf *d, mf_vec3 wm); \
     MF_FORCE_INLINE mf_real mf__##n##_lambda(const mf_ndf *d, mf_vec3 w); \
     MF_FORCE_INLINE mf_vec3 mf__##n##_sample_D(const mf_ndf *d, mf_real u1, mf_real u2); \
@@ -284,16 +277,16 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p);
     MF_FORCE_INLINE mf_vec3 mf__##n##_sample_visible_dir(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_real u2);)
 MF__NDF_KINDS(MF__NDF_INL_DECL)
 #undef MF__NDF_INL_DECL
-#define MF__NDF_TRY_D2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
-#define MF__NDF_TRY_D1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
-#define MF__NDF_TRY_L2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
-#define MF__NDF_TRY_L1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
-#define MF__NDF_TRY_S2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
-#define MF__NDF_TRY_S1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
-#define MF__NDF_TRY_SD2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
-#define MF__NDF_TRY_SD1(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
-#define MF__NDF_TRY_V2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible(d, w, u1, u2);)
-#define MF__NDF_TRY_VD2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible_dir(d, w, u1, u2);)
+#define MF__NDF_TRY_D2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
+#define MF__NDF_TRY_D1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_D(d, wm);)
+#define MF__NDF_TRY_L2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
+#define MF__NDF_TRY_L1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_lambda(d, w);)
+#define MF__NDF_TRY_S2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
+#define MF__NDF_TRY_S1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D(d, u1, u2);)
+#define MF__NDF_TRY_SD2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
+#define MF__NDF_TRY_SD1(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL1_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_D_dir(d, u1, u2);)
+#define MF__NDF_TRY_V2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible(d, w, u1, u2);)
+#define MF__NDF_TRY_VD2(N, n, inl, cen, iso, tr, et, ax, pp) MF__INL2_##inl(if (d->type == MF_NDF_##N) return mf__##n##_sample_visible_dir(d, w, u1, u2);)
 /* D of the untransformed distribution (homogeneous of degree -4 in wm) */
 MF_FORCE_INLINE mf_real mf__ndf_D_inline(const mf_ndf *d, mf_vec3 wm)
 {
@@ -331,9 +324,9 @@ MF_FORCE_INLINE mf_vec3 mf__ndf_sample_visible_dir_inline(const mf_ndf *d, mf_ve
 }
 /* The mean slope of the untransformed distribution: (0, 0) for the centred
  * kinds (CEN 1) and unknown ones; inline (the front ends test CEN first). */
-#define MF__NDF_MEAN_DECL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+#define MF__NDF_MEAN_DECL(N, n, inl, cen, iso, tr, et, ax, pp) \
     MF__IFNOT##cen(MF_FORCE_INLINE void mf__##n##_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my);)
-#define MF__NDF_TRY_MEAN(N, n, inl, cen, iso, ltc, tr, et, ax, pp) \
+#define MF__NDF_TRY_MEAN(N, n, inl, cen, iso, tr, et, ax, pp) \
     MF__IFNOT##cen(if (d->type == MF_NDF_##N) { mf__##n##_mean_slope(d, mx, my); return; })
 MF__NDF_KINDS(MF__NDF_MEAN_DECL)
 MF_FORCE_INLINE void mf__ndf_mean_slope(const mf_ndf *d, mf_real *mx, mf_real *my)

@@ -84,12 +84,6 @@ MF_FORCE_INLINE mf_vec3 mf__beckmann_sample_visible(const mf_ndf *d, mf_vec3 w, 
 {
     return mf_beckmann_sample_visible(d->ax, d->ay, w, u1, u2);
 }
-/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__beckmann_family(mf_real alpha, mf_real gamma)
-{
-    (void)gamma;
-    return mf_beckmann(alpha, alpha);
-}
 /* @cold */
 /* Beckmann visible slopes for unit roughness and view tan(theta) = tv (view
  * along +x): the slope x along the view has density ~ max(0, 1 - tv x) exp(-x^2),

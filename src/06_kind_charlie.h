@@ -35,12 +35,6 @@ MF_INLINE mf_ndf mf_charlie(mf_real alpha)
     d.p.charlie.k = k;
     return d;
 }
-/* the member of the LTC family (05_ndf.h, trait LTC): one roughness, gamma unused */
-MF_INLINE mf_ndf mf__charlie_family(mf_real alpha, mf_real gamma)
-{
-    (void)gamma;
-    return mf_charlie(alpha);
-}
 /* D for k = 1/alpha (Eq. 2), homogeneous of degree -4 in wm: (2 + k)
  * sin^k / (2 pi |wm|^4) with sin^2 = (x^2 + y^2) / |wm|^2; 0 for wm.z <= 0 and
  * non-finite wm, capped at MF_BIG (a vanishing wm). */

@@ -99,9 +99,3 @@ MF_FORCE_INLINE mf_vec3 mf__ggx_sample_visible_dir(const mf_ndf *d, mf_vec3 w, m
 {
     return mf__ggx_vndf_unnormalized(d->ax, d->ay, w, u1, u2, MF_R(1.0));
 }
-/* the isotropic member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__ggx_family(mf_real alpha, mf_real gamma)
-{
-    (void)gamma;
-    return mf_ggx(alpha, alpha);
-}

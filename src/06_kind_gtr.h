@@ -100,11 +100,6 @@ MF_INLINE mf_ndf mf_gtr_table_ndf(const mf_gtr_table *t)
     d.p.gtr.tab = t;
     return d;
 }
-/* the member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__gtr_family(mf_real alpha, mf_real gamma)
-{
-    return mf_gtr(alpha, gamma);
-}
 
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
  * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h; ISO 1). */

@@ -44,11 +44,6 @@ MF_INLINE mf_ndf mf_student_t(mf_real alpha_x, mf_real alpha_y, mf_real gamma)
     mf__student_t_sampler_init(&d.p.student_t);
     return d;
 }
-/* the member of the LTC family (05_ndf.h, trait LTC) */
-MF_INLINE mf_ndf mf__student_t_family(mf_real alpha, mf_real gamma)
-{
-    return mf_student_t(alpha, alpha, gamma);
-}
 /* The kind's entries of the generic dispatch (05_ndf.h), and the NDF-CDF
  * inversion the numerical visible-normal sampler uses (05_numeric_vndf.h). */
 MF_COLD mf_real mf__student_t_D(const mf_ndf *d, mf_vec3 wm);

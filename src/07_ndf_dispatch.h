@@ -7,10 +7,10 @@
  * (06_kind_*.h), whose functions it calls; every switch is generated from
  * MF__NDF_KINDS, so a new kind needs no line here. */
 /* @cold */
-#define MF__NDF_CASE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
-#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
-#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
-#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, ltc, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
+#define MF__NDF_CASE_D(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_D(d, wm);
+#define MF__NDF_CASE_LAMBDA(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_lambda(d, w);
+#define MF__NDF_CASE_SAMPLE_D(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_D(d, u1, u2);
+#define MF__NDF_CASE_SAMPLE_VISIBLE(N, n, inl, cen, iso, tr, et, ax, pp) case MF_NDF_##N: return mf__##n##_sample_visible(d, w, u1, u2);
 MF_COLD mf_real mf__ndf_D(const mf_ndf *d, mf_vec3 wm)
 {
     switch (d->type) {
@@ -39,7 +39,7 @@ MF_COLD mf_vec3 mf__ndf_sample_visible(const mf_ndf *d, mf_vec3 w, mf_real u1, m
     default: return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
     }
 }
-#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
+#define MF__NDF_CASE_PREP(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##pp(case MF_NDF_##N: return mf__##n##_prepare(d, &p->d, &p->s.n);)
 MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
 {
     switch (d->type) {
@@ -57,9 +57,9 @@ MF_COLD const mf_ndf *mf__ndf_prepare(const mf_ndf *d, mf__ndf_prep *p)
  * in 05_ndf.h): tan^2 at mass t from the pole (q = 1 - t beyond), the mass
  * beyond tan2, and the exponent p of the sampler's substitution; unknown kinds
  * give 0, 0 and 4. */
-#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
-#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
-#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
+#define MF__NDF_CASE_TAN2(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tan2(d, t, q);)
+#define MF__NDF_CASE_TAIL(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_tail(d, tan2);)
+#define MF__NDF_CASE_VNDF_P(N, n, inl, cen, iso, tr, et, ax, pp) MF__IF##iso(case MF_NDF_##N: return mf__##n##_vndf_p(d);)
 MF_INLINE mf_real mf__ndf_iso_tan2(const mf_ndf *d, mf_real t, mf_real q)
 {
     switch (d->type) {
@@ -85,14 +85,3 @@ MF_INLINE mf_real mf__ndf_iso_p(const mf_ndf *d)
 #undef MF__NDF_CASE_TAIL
 #undef MF__NDF_CASE_VNDF_P
 
-/* The member (alpha, gamma) of the family of kind `kind` (LTC 1) in *out, 1;
- * 0 for any other kind (out untouched). */
-#define MF__NDF_CASE_FAMILY(N, n, inl, cen, iso, ltc, tr, et, ax, pp) MF__IF##ltc(case MF_NDF_##N: *out = mf__##n##_family(alpha, gamma); return 1;)
-MF_INLINE int mf__ndf_family(int kind, mf_real alpha, mf_real gamma, mf_ndf *out)
-{
-    switch (kind) {
-    MF__NDF_KINDS(MF__NDF_CASE_FAMILY)
-    default: return 0;
-    }
-}
-#undef MF__NDF_CASE_FAMILY

@@ -457,12 +457,12 @@ static void test_dispatch(void)
     MFT_CHECK(bad == 0, "inline front ends and the cold dispatch agree for every kind");
     MFT_CHECK(mf__ndf_tr(MF_NDF_GGX) && !mf__ndf_tr(MF_NDF_STUDENT_T) && mf__ndf_tilted(MF_NDF_LEADR) &&
               !mf__ndf_tilted(MF_NDF_GGX) && mf__ndf_iso(MF_NDF_GTR) == 1 && mf__ndf_iso(MF_NDF_STUDENT_T) == 2 &&
-              mf__ndf_iso(MF_NDF_BECKMANN) == 0 && mf__ndf_ltc(MF_NDF_GTR) && !mf__ndf_ltc(MF_NDF_TABULATED) &&
+              mf__ndf_iso(MF_NDF_BECKMANN) == 0 &&
               mf__ndf_energy_table(MF_NDF_GGX) == 1 && mf__ndf_energy_table(MF_NDF_BECKMANN) == 2 &&
               !mf__ndf_axes(MF_NDF_LEADR), "the traits of MF__NDF_KINDS");
     MFT_CHECK(mf__ndf_iso(MF_NDF_CHARLIE) == 1 && !mf__ndf_tr(MF_NDF_CHARLIE) && !mf__ndf_tilted(MF_NDF_CHARLIE) &&
-              mf__ndf_ltc(MF_NDF_CHARLIE) && mf__ndf_axes(MF_NDF_CHARLIE) && mf__ndf_energy_table(MF_NDF_CHARLIE) == 0,
-              "the traits of Charlie: numerical visible normals of its own D, LTC family, isotropic");
+              mf__ndf_axes(MF_NDF_CHARLIE) && mf__ndf_energy_table(MF_NDF_CHARLIE) == 0,
+              "the traits of Charlie: numerical visible normals of its own D, isotropic");
     for (i = 0; i < 3; ++i) {
         mf_vec3 w = mft_dir(0.6, 0.2), m = mft_dir(0.3, 1.0), s, sv, z;
         mf_real mx = 1, my = 1;
