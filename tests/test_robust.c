@@ -107,6 +107,55 @@ void test_robust(void)
             }
         MFT_CHECK(bad == 0, "Fresnel in [0,1] for any input");
     }
+    /* the lobes of a whole material with odd input: EON, F82-tint, thin film,
+     * volumetric sheen. Outputs finite; f, pdf >= 0; reflectances and
+     * albedos in [0, 1]; samples a unit direction with positive pdf and
+     * finite weight, or the empty record */
+    {
+        const double vals[] = { -1.0, 0.0, 1e-12, 0.3, 1.0, 1.5, 1e6, nan, inf, -inf };
+        int bad_eon = 0, bad_f82 = 0, bad_film = 0, bad_sheen = 0, a, b;
+        for (a = 0; a < 10; ++a)
+            for (b = 0; b < 10; ++b) {
+                mf_real x = (mf_real)vals[a], y = (mf_real)vals[b];
+                double f82 = mf_fresnel_f82(x, y, x), f82a = mf_fresnel_f82_average(x, y);
+                mf_real eb[3], kb[3], rgb[3];
+                double tf, tf2;
+                eb[0] = x; eb[1] = y; eb[2] = MF_R(1.5); kb[0] = y; kb[1] = x; kb[2] = MF_R(0.0);
+                tf = mf_fresnel_thin_film(x, MF_R(1.0), y, MF_R(300.0), x, y, MF_R(550.0));
+                tf2 = mf_fresnel_thin_film(MF_R(0.7), x, MF_R(1.33), y, MF_R(1.5), MF_R(0.0), x);
+                mf_fresnel_thin_film_rgb(x, MF_R(1.0), MF_R(1.4), y, eb, kb, rgb);
+                if (!(f82 >= 0 && f82 <= 1) || !(f82a >= 0 && f82a <= 1)) ++bad_f82;
+                if (!(tf >= 0 && tf <= 1) || !(tf2 >= 0 && tf2 <= 1) || !(rgb[0] >= 0 && rgb[0] <= 1 && rgb[1] >= 0 && rgb[1] <= 1 && rgb[2] >= 0 && rgb[2] <= 1)) ++bad_film;
+                for (i = 0; i < 12; ++i) {
+                    double ea = mf_eon_albedo(dirs[i].z, x, y), ef = mf_eon_albedo_fast(dirs[i].z, x, y);
+                    double eav = mf_eon_albedo_average(x, y), sa = mf_sheen_albedo(dirs[i].z, x);
+                    if (!(ea >= 0 && ea <= 1) || !(ef >= 0 && ef <= 1) || !(eav >= 0 && eav <= 1)) ++bad_eon;
+                    if (!(sa >= 0 && sa <= 1)) ++bad_sheen;
+                    for (j = 0; j < 12; ++j) {
+                        double fe = mf_eon_brdf(dirs[i], dirs[j], x, y), pe = mf_eon_pdf(dirs[i], dirs[j], y);
+                        double fs = mf_sheen_brdf(dirs[i], dirs[j], x), ps = mf_sheen_pdf(dirs[i], dirs[j], x);
+                        if (!mft_finite(fe) || fe < 0 || !mft_finite(pe) || pe < 0) ++bad_eon;
+                        if (!mft_finite(fs) || fs < 0 || !mft_finite(ps) || ps < 0) ++bad_sheen;
+                    }
+                    for (j = 0; j < 7; ++j) {
+                        mf_sample se = mf_eon_sample(dirs[i], x, y, (mf_real)us[j], (mf_real)us[(j + 3) % 7]);
+                        mf_sample ss = mf_sheen_sample(dirs[i], x, (mf_real)us[j], (mf_real)us[(j + 3) % 7]);
+                        if (se.lobe == MF_LOBE_NONE ? (se.pdf != 0 || se.weight != 0)
+                                                    : (!unit_or_zero(se.wi) || !(se.pdf > 0) || !mft_finite(se.pdf) || !mft_finite(se.weight) || se.weight < 0)) ++bad_eon;
+                        if (ss.lobe == MF_LOBE_NONE ? (ss.pdf != 0 || ss.weight != 0)
+                                                    : (!unit_or_zero(ss.wi) || !(ss.pdf > 0) || !mft_finite(ss.pdf) || !mft_finite(ss.weight) || ss.weight < 0)) ++bad_sheen;
+                    }
+                }
+            }
+        snprintf(msg, sizeof msg, "odd input: EON brdf, pdf, sample, albedos (%d bad)", bad_eon);
+        MFT_CHECK(bad_eon == 0, msg);
+        snprintf(msg, sizeof msg, "odd input: F82-tint and its average in [0, 1] (%d bad)", bad_f82);
+        MFT_CHECK(bad_f82 == 0, msg);
+        snprintf(msg, sizeof msg, "odd input: thin film, exact and RGB, in [0, 1] (%d bad)", bad_film);
+        MFT_CHECK(bad_film == 0, msg);
+        snprintf(msg, sizeof msg, "odd input: volumetric sheen brdf, pdf, sample, albedo (%d bad)", bad_sheen);
+        MFT_CHECK(bad_sheen == 0, msg);
+    }
     /* tiny alpha: still exact enough to reflect like a mirror */
     {
         mf_ndf d = mf_ggx(0, 0);

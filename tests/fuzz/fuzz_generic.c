@@ -102,5 +102,27 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     r = mf_brdf_sample_bounded(&d, wo, u1, u2);
     FZ_SAMPLE(r, "brdf_sample_bounded");
     if (r.lobe != MF_LOBE_NONE && !(r.wi.z > MF_R(0.0))) FZ_FAIL("brdf_sample_bounded below the horizon: z = %g", (double)r.wi.z);
+    {   /* the lobes of a whole material, parameters from the same bytes:
+         * EON (rho x, sigma y), F82-tint, thin film, volumetric sheen */
+        mf_real x = fz_real(&in), y = fz_real(&in), eb[3], kb[3], rgb[3];
+        int c;
+        FZ_NONNEG(mf_eon_brdf(wo, wi, x, y), "eon_brdf");
+        FZ_NONNEG(mf_eon_pdf(wo, wi, y), "eon_pdf");
+        FZ_NONNEG(mf_eon_albedo(wo.z, x, y), "eon_albedo");
+        FZ_NONNEG(mf_eon_albedo_fast(wo.z, x, y), "eon_albedo_fast");
+        r = mf_eon_sample(wo, x, y, u1, u2);
+        FZ_SAMPLE(r, "eon_sample");
+        FZ_NONNEG(mf_fresnel_f82(wo.z, x, y), "fresnel_f82");
+        FZ_NONNEG(mf_fresnel_f82_average(x, y), "fresnel_f82_average");
+        FZ_NONNEG(mf_fresnel_thin_film(wo.z, u1, x, y * MF_R(1000.0), u2, x, MF_R(380.0) + MF_R(400.0) * u2), "fresnel_thin_film");
+        eb[0] = x; eb[1] = y; eb[2] = u1; kb[0] = u2; kb[1] = x; kb[2] = y;
+        mf_fresnel_thin_film_rgb(wo.z, MF_R(1.0), u1 + MF_R(1.0), x * MF_R(1000.0), eb, kb, rgb);
+        for (c = 0; c < 3; ++c) FZ_NONNEG(rgb[c], "fresnel_thin_film_rgb");
+        FZ_NONNEG(mf_sheen_brdf(wo, wi, x), "sheen_brdf");
+        FZ_NONNEG(mf_sheen_pdf(wo, wi, x), "sheen_pdf");
+        FZ_NONNEG(mf_sheen_albedo(wo.z, x), "sheen_albedo");
+        r = mf_sheen_sample(wo, x, u1, u2);
+        FZ_SAMPLE(r, "sheen_sample");
+    }
     return 0;
 }
