@@ -143,6 +143,10 @@ $(BUILD)/ref_double.o: tests/ref_other.c microfacet.h $(CONFIG)
 	@echo "  CC      $@"
 	$(Q)$(CC) -std=c99 $(OPT) $(TWARN) $(PLAIN_INLINE) -DMF_USE_DOUBLE -I. -c $< -o $@
 
+# make test's steps write "passed failed" to $(RES)/<step> (tests/run_step.sh)
+RES := $(BUILD)/results
+RUN_STEP := sh tests/run_step.sh
+SUM := sh tests/sum_results.sh $(RES)
 # one template per configuration: its objects, the full and the quick binary,
 # and the make test step that runs it
 define TEST_CFG
@@ -180,9 +184,6 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 # ---- status is non-zero on any failure. make check-all adds the long
 # ---- campaigns: every module at full size (--full) in all four builds, the
 # ---- fuzz smoke run and the sanitizers.
-RES := $(BUILD)/results
-RUN_STEP := sh tests/run_step.sh
-SUM := sh tests/sum_results.sh $(RES)
 CHECK_STEPS := header api kinds prefix history warnings config fastmath package readme
 TEST_STEPS := include_cost $(CHECK_STEPS) c_double c_float examples $(EXR_STEPS) cpp_double cpp_float
 
