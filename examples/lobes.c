@@ -18,11 +18,11 @@
  *      to 800 nm (mf_fresnel_thin_film_rgb).
  * The sky term is one importance sample per lobe and pixel sample (the
  * sampler's record: direction and weight); the sun is evaluated directly.
- * 16 jittered samples a pixel. Prints one check per lobe (the furnace
- * sphere's mean radiance over the background's for the energy-preserving
- * spheres, the thin film at zero thickness against the bare conductor's
- * Fresnel) and the count of non-finite samples; the exit status is 1 when a
- * check fails. Writes base.png (tone mapped, labelled), base.pfm (linear)
+ * 32 jittered samples a pixel (16 on the sheen row). Prints one check per
+ * lobe (the furnace sphere's mean radiance over the background's for the
+ * energy-preserving spheres, the thin film at zero thickness against the
+ * bare conductor's Fresnel) and the count of non-finite samples; the exit
+ * status is 1 when a check fails. Writes base.png (tone mapped, labelled), base.pfm (linear)
  * and, built with OpenEXR, base.exr.
  *
  *   cc -O2 -I. examples/lobes.c -o lobes -lm      (from the repo root)
@@ -43,7 +43,10 @@
 #define HEAD 18                /* the background titles above the grid */
 #define W (2 * COLS * CELL)
 #define H (HEAD + ROWS * CELL)
-#define SPP 16
+#define SPP 16                 /* pixel samples of the sheen row (its MIS counts) */
+/* pixel samples per row: the sheen row's Charlie evaluations cost about 10x
+ * the other rows' samples, so it takes half as many */
+static const int row_spp[ROWS] = { 32, SPP, 32, 32 };
 #define NMU 64                 /* sheen albedo table: mu = (i / (NMU - 1))^2 */
 #define NFILM 256              /* thin-film table: cos = i / (NFILM - 1) */
 #define SHEEN_STRIDE 4         /* the Charlie sampler (a numerical inversion, about
@@ -317,12 +320,13 @@ int main(int argc, char **argv)
             rng r;
             rng_seed(&r, (uint64_t)(py * W + px));
             for (k = 0; k < 4; ++k) sh[k] = rng_u(&r);   /* per-pixel shift of the point set */
-            for (s = 0; s < SPP; ++s) {
+            int n = row_spp[row];
+            for (s = 0; s < n; ++s) {
                 /* stratified u[0], golden-ratio u[1] (and a second pair), shifted */
                 mf_real u[4], x, y, z2;
-                u[0] = ((mf_real)s + MF_R(0.5)) / (mf_real)SPP + sh[0];
+                u[0] = ((mf_real)s + MF_R(0.5)) / (mf_real)n + sh[0];
                 u[1] = (mf_real)s * MF_R(0.618034) + sh[1];
-                u[2] = ((mf_real)((s * 7) % SPP) + MF_R(0.5)) / (mf_real)SPP + sh[2];
+                u[2] = ((mf_real)((s * 7) % n) + MF_R(0.5)) / (mf_real)n + sh[2];
                 u[3] = (mf_real)s * MF_R(0.7548777) + sh[3];
                 for (k = 0; k < 4; ++k) u[k] -= (mf_real)(int)u[k];
                 x = ((mf_real)(px % CELL) + rng_u(&r) - MF_R(0.5) * CELL) / radius;
@@ -341,7 +345,7 @@ int main(int argc, char **argv)
                 if (!finite3(v)) { ++bad; continue; }   /* guard: never let NaN through */
                 for (c = 0; c < 3; ++c) sum[c] += v[c];
             }
-            for (c = 0; c < 3; ++c) ex_px(&im, px, py)[c] = (float)(sum[c] / (mf_real)SPP);
+            for (c = 0; c < 3; ++c) ex_px(&im, px, py)[c] = (float)(sum[c] / (mf_real)n);
         }
     }
 
