@@ -10,11 +10,13 @@
  *      mf_brdf_sample) over a dark EON base scaled by 1 - E_sheen(wo), at
  *      alpha 0.15, 0.3, 0.6, 1, and alpha 0.3 over a white base (rho 1:
  *      invisible in the furnace when E_sheen is the sheen's true albedo);
- *   3. metals: GGX (alpha 0.3) with the F82-tint Fresnel (mf_fresnel_f82) of
+ *   3. fuzz: the volumetric sheen (mf_sheen_*, an LTC of a fibre layer) over
+ *      the same bases, scaled by 1 - mf_sheen_albedo(wo);
+ *   4. metals: GGX (alpha 0.3) with the F82-tint Fresnel (mf_fresnel_f82) of
  *      gold, copper and aluminium plus the Kulla-Conty compensation lobe
  *      (mf_brdf_ms, mf_ms_fresnel of mf_fresnel_f82_average), then a white
  *      conductor (f0 = tint = 1) at alpha 0.8 without and with compensation;
- *   4. thin film: oil (n 1.5) on iron, GGX alpha 0.15, film thickness 100
+ *   5. thin film: oil (n 1.5) on iron, GGX alpha 0.15, film thickness 100
  *      to 800 nm (mf_fresnel_thin_film_rgb).
  * The sky term is one importance sample per lobe and pixel sample (the
  * sampler's record: direction and weight); the sun is evaluated directly.
@@ -38,7 +40,7 @@
 #include <string.h>
 
 #define COLS 5                 /* spheres per row and background */
-#define ROWS 4
+#define ROWS 5
 #define CELL 100
 #define HEAD 18                /* the background titles above the grid */
 #define W (2 * COLS * CELL)
@@ -46,13 +48,13 @@
 #define SPP 16                 /* pixel samples of the sheen row (its MIS counts) */
 /* pixel samples per row: the sheen row's Charlie evaluations cost about 10x
  * the other rows' samples, so it takes half as many */
-static const int row_spp[ROWS] = { 32, SPP, 32, 32 };
+static const int row_spp[ROWS] = { 32, SPP, 32, 32, 32 };
 #define NMU 64                 /* sheen albedo table: mu = (i / (NMU - 1))^2 */
 #define NFILM 256              /* thin-film table: cos = i / (NFILM - 1) */
 #define SHEEN_STRIDE 4         /* the Charlie sampler (a numerical inversion, about
                                   50x a GGX sample) on every 4th pixel sample */
 
-enum { ROW_EON, ROW_SHEEN, ROW_METAL, ROW_FILM };
+enum { ROW_EON, ROW_SHEEN, ROW_FUZZ, ROW_METAL, ROW_FILM };
 
 /* ---- materials */
 static const mf_real eon_rho[COLS] = { MF_R(0.8), MF_R(0.8), MF_R(0.8), MF_R(1.0), MF_R(1.0) };
@@ -209,6 +211,30 @@ static void shade(int row, int col, int furnace, mf_vec3 n, mf_vec3 sun_w, const
         }
         break;
     }
+    case ROW_FUZZ: {
+        /* The volumetric sheen (mf_sheen_*, OpenPBR's fuzz) over the same
+         * bases, albedo-scaled by its own albedo mf_sheen_albedo: one sample
+         * from either lobe with probability 1/2 (u[0] picks), weighted by
+         * the mixture pdf (the one-sample balance heuristic). */
+        mf_real a = sheen_alpha[col], scale = MF_R(1.0) - mf_sheen_albedo(wo.z, a), base[3];
+        for (c = 0; c < 3; ++c) base[c] = col == COLS - 1 ? MF_R(1.0) : sheen_base[c];
+        s = u[0] < MF_R(0.5) ? mf_sheen_sample(wo, a, MF_R(2.0) * u[0], u[1])
+                             : mf_eon_sample(wo, MF_R(1.0), SHEEN_SIGMA, MF_R(2.0) * u[0] - MF_R(1.0), u[1]);
+        if (s.lobe != MF_LOBE_NONE) {
+            mf_real pm = MF_R(0.5) * (mf_sheen_pdf(wo, s.wi, a) + mf_eon_pdf(wo, s.wi, SHEEN_SIGMA));
+            mf_real ff = mf_sheen_brdf(wo, s.wi, a);
+            env(furnace, TO_WORLD(s.wi), L);
+            if (pm > MF_R(0.0))
+                for (c = 0; c < 3; ++c)
+                    out[c] += (ff + scale * mf_eon_brdf(wo, s.wi, base[c], SHEEN_SIGMA)) * s.wi.z / pm * L[c];
+        }
+        if (sunz > MF_R(0.0)) {
+            mf_real ff = mf_sheen_brdf(wo, sun, a);
+            for (c = 0; c < 3; ++c)
+                out[c] += (ff + scale * mf_eon_brdf(wo, sun, base[c], SHEEN_SIGMA)) * sunz * sun_e[c];
+        }
+        break;
+    }
     case ROW_METAL: {
         mf_ndf d = mf_ggx(metal_alpha[col], metal_alpha[col]);
         const mf_real *f0 = metal_f0[col], *tn = metal_tint[col];
@@ -264,6 +290,10 @@ static void labels(int row, int col, char *l1, char *l2, size_t n)
         break;
     case ROW_SHEEN:
         snprintf(l1, n, "Charlie a %#.3g", (double)sheen_alpha[col]);
+        snprintf(l2, n, col == COLS - 1 ? "on white" : "on dark red");
+        break;
+    case ROW_FUZZ:
+        snprintf(l1, n, "fuzz a %#.3g", (double)sheen_alpha[col]);
         snprintf(l2, n, col == COLS - 1 ? "on white" : "on dark red");
         break;
     case ROW_METAL:
@@ -377,19 +407,21 @@ int main(int argc, char **argv)
     {
         /* furnace ratios: the background is exactly 1 */
         double eon0 = fsum[ROW_EON][3] / fn[ROW_EON][3], eon1 = fsum[ROW_EON][4] / fn[ROW_EON][4];
-        double sh = fsum[ROW_SHEEN][4] / fn[ROW_SHEEN][4];
+        double sh = fsum[ROW_SHEEN][4] / fn[ROW_SHEEN][4], fz = fsum[ROW_FUZZ][4] / fn[ROW_FUZZ][4];
         double ss = fsum[ROW_METAL][3] / fn[ROW_METAL][3], ms = fsum[ROW_METAL][4] / fn[ROW_METAL][4];
         int ok_eon = fabs(eon0 - 1.0) < 1e-2 && fabs(eon1 - 1.0) < 1e-2;
-        int ok_sh = fabs(sh - 1.0) < 1e-2, ok_ms = fabs(ms - 1.0) < 1e-2, ok_film = film_dev < 1e-3;
+        int ok_fz = fabs(fz - 1.0) < 1e-2, ok_sh = fabs(sh - 1.0) < 1e-2, ok_ms = fabs(ms - 1.0) < 1e-2, ok_film = film_dev < 1e-3;
         printf("EON diffuse: furnace sphere / background at rho 1: %.4f (sigma 0), %.4f (sigma 1) (1 within 1e-2): %s\n",
                eon0, eon1, ok_eon ? "ok" : "FAIL");
         printf("Charlie sheen over a white base (alpha 0.3): furnace sphere / background %.4f (1 within 1e-2): %s\n",
                sh, ok_sh ? "ok" : "FAIL");
+        printf("volumetric sheen over a white base (alpha 0.3): furnace sphere / background %.4f (1 within 1e-2): %s\n",
+               fz, ok_fz ? "ok" : "FAIL");
         printf("F82 / GGX alpha 0.8, f0 = tint = 1: furnace %.4f single scattering, %.4f with mf_brdf_ms (1 within 1e-2): %s\n",
                ss, ms, ok_ms ? "ok" : "FAIL");
         printf("thin film at 0 nm vs mf_fresnel_conductor: max |difference| %.2e over the angle (below 1e-3): %s\n",
                film_dev, ok_film ? "ok" : "FAIL");
-        fail = !(ok_eon && ok_sh && ok_ms && ok_film);
+        fail = !(ok_eon && ok_sh && ok_fz && ok_ms && ok_film);
     }
     printf("non-finite samples: %ld\n", bad);
     return bad != 0 || err || fail;
