@@ -89,7 +89,7 @@ static int hits(const mf_vec3 *p, int n, mf_vec3 w, int two_sided)
 
 static void polygon_case(const char *name, const mf_ltc *l, const mf_vec3 *p, int n, int two_sided, mft_rng *r)
 {
-    const int N = 4000000;
+    const int N = MFT_N(4000000);   /* make test: 1e6 (the bound grows with se) */
     int i, k = 0;
     double est, se, got = mf_ltc_integrate(l, p, n, two_sided);
     char msg[160];
