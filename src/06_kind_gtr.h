@@ -6,10 +6,9 @@
  * Dimov's exact formulas at gamma = 0..4 (thesis C.7-C.11) and, between them,
  * from an exact mixture of those distributions integrated by a Gauss-Jacobi
  * rule (mf__gtr_mix_init): too large for mf_ndf, it lives in an mf_gtr_table
- * (mf_gtr_table_build, mf_gtr_table_ndf), or is built at each call of Lambda
- * when the distribution has none (mf_gtr at a non-integer gamma: exact, about
- * a microsecond). NDF sampling by the closed-form inverse CDF
- * (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
+ * (mf_gtr_table_build, mf_gtr_table_ndf), or, for mf_gtr by value, in a
+ * per-thread cache of recent tables (mf__gtr_cached). NDF sampling by the
+ * closed-form inverse CDF (mf__gtr_sample_D), visible normals by exact rejection from GGX or from a
  * mixture of GGX lobes (mf__gtr_sample_visible), falling back on the exact
  * numerical inversion of 05_numeric_vndf.h. Everything but the constructors
  * is cold. */
@@ -48,15 +47,19 @@ typedef struct mf_ndf_gtr {
 MF_COLD int mf__gtr_sampler_init(mf_ndf_gtr *p, mf_real a);
 MF_COLD void mf__gtr_mix_init(mf_gtr_table *t, mf_real a, mf_real gamma);
 MF_COLD void mf__gtr_envelope(const mf_ndf *d, mf_real vs[19]);
+/* the table of a GTR by value from the per-thread cache, or NULL (see @cold) */
+MF_COLD const mf_gtr_table *mf__gtr_cached(const mf_ndf *d);
 /* Burley's GTR, isotropic: D = N / (1 + (alpha^2 - 1) cos^2)^gamma.
  * alpha in [MF_ALPHA_MIN, 1], gamma in [0, 4] (clamped; see CLAMPS above).
  * gamma = 2 is GGX, gamma = 1 the Berry distribution (limit C.6), gamma = 0
  * the uniform 1/pi; alpha = 1 gives 1/pi for every gamma. N is written with
  * x/expm1(x) so the limits gamma -> 1 and alpha -> 1 are exact. At a
- * non-integer gamma, Lambda builds its rule at each call (about a
- * microsecond); below gamma 2 and alpha 1/4 the visible sampler derives its
- * envelope at each sample: for speed, build an mf_gtr_table once and use
- * mf_gtr_table_ndf (the same values). */
+ * non-integer gamma, Lambda needs a quadrature rule and the visible sampler
+ * (below gamma 2 and alpha 1/4) an envelope, too large for mf_ndf: they come
+ * from a per-thread cache of the last four (alpha, gamma) used (built on a
+ * miss, about a microsecond), or are built at each call where the compiler
+ * has no thread-local storage (and in CUDA device code). An mf_gtr_table
+ * built once (mf_gtr_table_ndf) needs neither: the same values. */
 MF_INLINE mf_ndf mf_gtr(mf_real alpha, mf_real gamma)
 {
     mf_ndf d;
@@ -137,6 +140,39 @@ MF_INLINE mf_real mf__gtr_sqrt(mf_real x)
 }
 
 /* @cold */
+/* The table of a GTR without one (mf_gtr by value at a non-integer gamma):
+ * from a per-thread cache of the last MF__GTR_CACHE tables, keyed by the
+ * clamped (alpha, gamma) and refilled in turn, so that Lambda and the
+ * visible sampler build the rule and the envelope once per material, not
+ * once per call (the table of mf_gtr_table_build: the same bits). NULL
+ * without thread-local storage (C99 compilers other than gcc, clang and
+ * MSVC; CUDA device code): the caller then builds what it needs. */
+#define MF__GTR_CACHE 4
+#if defined(__cplusplus) && __cplusplus >= 201103L
+#define MF__GTR_TLS thread_local
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L && !defined(__STDC_NO_THREADS__)
+#define MF__GTR_TLS _Thread_local
+#elif defined(__GNUC__) || defined(__clang__)
+#define MF__GTR_TLS __thread
+#elif defined(_MSC_VER)
+#define MF__GTR_TLS __declspec(thread)
+#endif
+MF_COLD const mf_gtr_table *mf__gtr_cached(const mf_ndf *d)
+{
+#if defined(MF__GTR_TLS) && !defined(__CUDA_ARCH__)
+    static MF__GTR_TLS mf_gtr_table cache[MF__GTR_CACHE];   /* alpha 0: empty */
+    static MF__GTR_TLS unsigned next;
+    int i;
+    for (i = 0; i < MF__GTR_CACHE; ++i)
+        if (cache[i].alpha == d->ax && cache[i].gamma == d->p.gtr.gamma) return &cache[i];
+    i = (int)(next++ % MF__GTR_CACHE);
+    mf_gtr_table_build(&cache[i], d->ax, d->p.gtr.gamma);
+    return &cache[i];
+#else
+    (void)d;
+    return 0;
+#endif
+}
 /* D, homogeneous of degree -4: N / ((sin^2 + a^2 cos^2)^gamma |wm|^4) */
 MF_COLD mf_real mf__gtr_D(const mf_ndf *d, mf_vec3 wm)
 {
@@ -216,10 +252,9 @@ MF_INLINE mf_real mf__gtr_lambda_int(int g, mf_real a2, mf_real L, mf_real t2)
  * 25 gammas in [0, 4], theta 1..89.9 deg): relative error of Lambda <= 1.8e-6
  * in double (test bound 1e-5); float 8.4e-7 where Lambda > 1e-4 and 6.0e-7
  * on 1 + Lambda. Cost: bench lines gtr_lambda_* (docs/PERFORMANCE.md);
- * with the rule of an mf_gtr_table Lambda is a few GGX Lambdas, without one
- * each call builds the rule (Golub-Welsch) first: build an mf_gtr_table for
- * a non-integer gamma used more than a few times (integer gamma needs no
- * rule). The
+ * with the rule of an mf_gtr_table (or of the per-thread cache, for mf_gtr
+ * by value) Lambda is a few GGX Lambdas; building the rule (Golub-Welsch)
+ * costs about a microsecond (integer gamma needs no rule). The
  * rule's 2 x 24 numbers do not fit in mf_ndf, and no cheaper exact form is
  * known: the per-call work of any rule whose nodes depend on gamma is
  * transcendental per node. tan^2 is capped at 1e16 (Lambda ~ 1e8, G1 ~ 1e-8)
@@ -263,7 +298,9 @@ MF_COLD mf_real mf__gtr_lambda(const mf_ndf *d, mf_vec3 w)
         return mf_max(mf__gtr_lambda_int((int)p->gamma, d->ax * d->ax, p->L, t2), MF_R(0.0));
     if (p->tab) return mf__gtr_lambda_mix(p->tab, mix, t2);
     {
-        mf_gtr_table t;   /* no table (mf_gtr): the rule, built here */
+        const mf_gtr_table *c = mf__gtr_cached(d);   /* mf_gtr by value */
+        mf_gtr_table t;   /* no thread-local cache: the rule, built here */
+        if (c) return mf__gtr_lambda_mix(c, mix, t2);
         mf__gtr_mix_init(&t, d->ax, p->gamma);
         return mf__gtr_lambda_mix(&t, mix, t2);
     }
@@ -480,7 +517,8 @@ MF_INLINE mf_vec3 mf__gtr_sample_vis(const mf_ndf *d, mf_vec3 w, mf_real u1, mf_
     } else {
         mf_real s2 = w.x * w.x + w.y * w.y, th, t4, c0, c0p, c1, W[7], tot, a = d->ax, env[19];
         const mf_real *vs = env;
-        if (p->tab) vs = p->tab->vs;   /* built once, by the same function */
+        const mf_gtr_table *c = p->tab ? p->tab : mf__gtr_cached(d);
+        if (c) vs = c->vs;   /* built once, by the same function */
         else mf__gtr_envelope(d, env);
         t4 = s2 < w.z * w.z / (MF_EPS * MF_EPS) ? s2 / (w.z * w.z) : MF_R(1.0) / (MF_EPS * MF_EPS);   /* t^2 */
         th = MF_R(0.5) * MF_SQRT(t4);                                                  /* t/2, off the c0 path */

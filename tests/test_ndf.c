@@ -348,8 +348,8 @@ static void test_ndf_size(void)
 
 static int vec_same(mf_vec3 a, mf_vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-/* A GTR of an mf_gtr_table and mf_gtr by value (whose Lambda builds the same
- * rule at each call) agree to the bit, transformed too; the table's builder
+/* A GTR of an mf_gtr_table and mf_gtr by value (whose Lambda takes the same
+ * rule from the per-thread cache, or builds it) agree to the bit, transformed too; the table's builder
  * rejects NULL and mf_gtr_table_ndf(NULL) is no distribution. */
 static void test_gtr_table(void)
 {
