@@ -1028,8 +1028,8 @@ static void bench_ltc_ngons(void)
             for (r = 0; r < 3; ++r) {
                 mf_real *dc = r == 0 ? &pc[j][k].x : r == 1 ? &pc[j][k].y : &pc[j][k].z;
                 mf_real *du = r == 0 ? &pu[j][k].x : r == 1 ? &pu[j][k].y : &pu[j][k].z;
-                *dc = (mf_real)(l.M[3 * r] * qc[0] + l.M[3 * r + 1] * qc[1] + l.M[3 * r + 2] * qc[2]);
-                *du = (mf_real)(l.M[3 * r] * qu[0] + l.M[3 * r + 1] * qu[1] + l.M[3 * r + 2] * qu[2]);
+                *dc = (mf_real)((double)l.M[3 * r] * qc[0] + (double)l.M[3 * r + 1] * qc[1] + (double)l.M[3 * r + 2] * qc[2]);
+                *du = (mf_real)((double)l.M[3 * r] * qu[0] + (double)l.M[3 * r + 1] * qu[1] + (double)l.M[3 * r + 2] * qu[2]);
             }
         }
         for (k = 0; k < 4; ++k) best[j][k] = 1e30;

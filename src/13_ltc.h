@@ -417,10 +417,50 @@ MF_INLINE mf_real mf__quad_sum(const mf_real *A, const mf_vec3 *p)
     return (n0 * q1 + n1 * q0) / (q0 * q1);
 }
 
-/* Other polygons above the horizon in blocks of 16 vertices (transform and
- * normalize into three scalar buffers, then the edges as one fraction, q
- * below 2.5^16); the first vertex below the horizon hands over to the
- * clipping loop. */
+/* The clipped rest of a polygon, streamed: vertices i..n-1 are transformed
+ * and (those above the horizon) normalized once each, and every edge is
+ * summed as it is met, so no vertex buffer is needed and any n works. An
+ * edge leaving the horizon ends at its exit point, one entering it starts at
+ * its entry point, and the horizon arc from the exit point to the next entry
+ * point joins them (the first entry, met before any exit, waits for the last
+ * exit). (ax, ay, az) is vertex i-1, unit when above; (fx, fy, fz) is vertex
+ * 0, unit when above. The horizon point u.z d - d.z u of an edge from u
+ * (above) to d (below) is a positive combination, so u may be unit. */
+MF__LTC_NOINLINE mf_real mf__ngon_clipped(const mf_real *A, const mf_vec3 *p, int n, int i, mf_real sum,
+                                          mf_real ax, mf_real ay, mf_real az, mf_real fx, mf_real fy, mf_real fz)
+{
+    mf_real x, y, z, ex = MF_R(0.0), ey = MF_R(0.0), hx, hy, gx = MF_R(0.0), gy = MF_R(0.0);
+    int sparse = A && MF__LTC_SPARSE(A), first_entry = 0, have_exit = 0;
+    for (; i <= n; ++i) {
+        if (i == n) { x = fx; y = fy; z = fz; }
+        else {
+            x = p[i].x; y = p[i].y; z = p[i].z;
+            if (!A) {
+            } else if (sparse) MF__LTC_XF_SPARSE(A, x, y, z);
+            else MF__LTC_XF(A, x, y, z);
+            if (z > MF_R(0.0)) MF__LTC_UNIT(x, y, z);
+        }
+        if (az > MF_R(0.0)) {
+            if (z > MF_R(0.0)) sum += mf__edge_zs(ax, ay, az, x, y, z);
+            else {   /* leaves */
+                MF__LTC_HORIZON(ex, ey, ax, ay, az, x, y, z);
+                sum += mf__edge_zs(ax, ay, az, ex, ey, MF_R(0.0));
+                have_exit = 1;
+            }
+        } else if (z > MF_R(0.0)) {   /* enters */
+            MF__LTC_HORIZON(hx, hy, x, y, z, ax, ay, az);
+            if (have_exit) sum += mf__edge_z_horizon(ex, ey, hx, hy);
+            else { gx = hx; gy = hy; first_entry = 1; }
+            sum += mf__edge_zs(hx, hy, MF_R(0.0), x, y, z);
+        }
+        ax = x; ay = y; az = z;
+    }
+    return first_entry ? sum + mf__edge_z_horizon(ex, ey, gx, gy) : sum;
+}
+
+/* Other polygons: above the horizon in blocks of 16 vertices (transform and
+ * normalize into three scalar buffers, then the edges); the first vertex
+ * below the horizon hands the rest to the streaming clip above. */
 MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
 {
     mf_real ux[16], uy[16], uz[16], x, y, z, px = MF_R(0.0), py = MF_R(0.0), pz = MF_R(0.0);
@@ -443,8 +483,15 @@ MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
         px = ux[m - 1]; py = uy[m - 1]; pz = uz[m - 1];
     }
     return sum + mf__edge_zs(px, py, pz, fx, fy, fz);
-clip:
-    return mf__polygon_clipped(A, p, n);
+clip:   /* vertex base + k is below: the edges so far, then the rest */
+    if (base + k == 0) { px = fx = x; py = fy = y; pz = fz = z; k = 1; }
+    else if (k > 0) {
+        if (base == 0) { fx = ux[0]; fy = uy[0]; fz = uz[0]; }
+        else sum += mf__edge_zs(px, py, pz, ux[0], uy[0], uz[0]);
+        for (m = 0; m + 1 < k; ++m) sum += mf__edge_zs(ux[m], uy[m], uz[m], ux[m + 1], uy[m + 1], uz[m + 1]);
+        px = ux[k - 1]; py = uy[k - 1]; pz = uz[k - 1];
+    }
+    return mf__ngon_clipped(A, p, n, base + k, sum, px, py, pz, fx, fy, fz);
 }
 
 /* The signed sum of the polygon transformed by A, clipped at the horizon. */
