@@ -3729,35 +3729,44 @@ MF_INLINE mf_real mf__tri_sum(const mf_real *A, const mf_vec3 *p)
  * exit). (ax, ay, az) is vertex i-1, unit when above; (fx, fy, fz) is vertex
  * 0, unit when above. The horizon point u.z d - d.z u of an edge from u
  * (above) to d (below) is a positive combination, so u may be unit. */
+/* one vertex (x, y, z) of the clipping stream below, unit when above */
+#define MF__LTC_CLIP_STEP() do { \
+        if (az > MF_R(0.0)) { \
+            if (z > MF_R(0.0)) sum += mf__edge_zs(ax, ay, az, x, y, z); \
+            else {   /* leaves */ \
+                MF__LTC_HORIZON(ex, ey, ax, ay, az, x, y, z); \
+                sum += mf__edge_zs(ax, ay, az, ex, ey, MF_R(0.0)); \
+                have_exit = 1; \
+            } \
+        } else if (z > MF_R(0.0)) {   /* enters */ \
+            MF__LTC_HORIZON(hx, hy, x, y, z, ax, ay, az); \
+            if (have_exit) sum += mf__edge_z_horizon(ex, ey, hx, hy); \
+            else { gx = hx; gy = hy; first_entry = 1; } \
+            sum += mf__edge_zs(hx, hy, MF_R(0.0), x, y, z); \
+        } \
+        ax = x; ay = y; az = z; \
+    } while (0)
 MF__LTC_NOINLINE mf_real mf__ngon_clipped(const mf_real *A, const mf_vec3 *p, int n, int i, mf_real sum,
                                           mf_real ax, mf_real ay, mf_real az, mf_real fx, mf_real fy, mf_real fz)
 {
     mf_real x, y, z, ex = MF_R(0.0), ey = MF_R(0.0), hx, hy, gx = MF_R(0.0), gy = MF_R(0.0);
-    int sparse = A && MF__LTC_SPARSE(A), first_entry = 0, have_exit = 0;
-    for (; i <= n; ++i) {
-        if (i == n) { x = fx; y = fy; z = fz; }
-        else {
+    int first_entry = 0, have_exit = 0;
+    if (A && MF__LTC_SPARSE(A))   /* the loop per form of A */
+        for (; i < n; ++i) {
             x = p[i].x; y = p[i].y; z = p[i].z;
-            if (!A) {
-            } else if (sparse) MF__LTC_XF_SPARSE(A, x, y, z);
-            else MF__LTC_XF(A, x, y, z);
+            MF__LTC_XF_SPARSE(A, x, y, z);
             if (z > MF_R(0.0)) MF__LTC_UNIT(x, y, z);
+            MF__LTC_CLIP_STEP();
         }
-        if (az > MF_R(0.0)) {
-            if (z > MF_R(0.0)) sum += mf__edge_zs(ax, ay, az, x, y, z);
-            else {   /* leaves */
-                MF__LTC_HORIZON(ex, ey, ax, ay, az, x, y, z);
-                sum += mf__edge_zs(ax, ay, az, ex, ey, MF_R(0.0));
-                have_exit = 1;
-            }
-        } else if (z > MF_R(0.0)) {   /* enters */
-            MF__LTC_HORIZON(hx, hy, x, y, z, ax, ay, az);
-            if (have_exit) sum += mf__edge_z_horizon(ex, ey, hx, hy);
-            else { gx = hx; gy = hy; first_entry = 1; }
-            sum += mf__edge_zs(hx, hy, MF_R(0.0), x, y, z);
+    else
+        for (; i < n; ++i) {
+            x = p[i].x; y = p[i].y; z = p[i].z;
+            if (A) MF__LTC_XF(A, x, y, z);
+            if (z > MF_R(0.0)) MF__LTC_UNIT(x, y, z);
+            MF__LTC_CLIP_STEP();
         }
-        ax = x; ay = y; az = z;
-    }
+    x = fx; y = fy; z = fz;   /* back to vertex 0 */
+    MF__LTC_CLIP_STEP();
     return first_entry ? sum + mf__edge_z_horizon(ex, ey, gx, gy) : sum;
 }
 

@@ -1017,7 +1017,7 @@ static void bench_ltc_ngons(void)
     mf_ltc l = mf_ltc_ggx(MF_R(0.7), MF_R(0.3));
     mf_vec3 pc[12][32], pu[12][32];
     double best[12][4], s = 0.0;
-    int i, j, k, it, reps = 4000;
+    int i, j, k, it, reps = 1000;
     for (j = 0; j < 12; ++j) {
         int n = ns[j];
         for (k = 0; k < n; ++k) {
@@ -1034,7 +1034,7 @@ static void bench_ltc_ngons(void)
         }
         for (k = 0; k < 4; ++k) best[j][k] = 1e30;
     }
-    for (it = 0; it < 40; ++it)
+    for (it = 0; it < 400; ++it)
         for (j = 0; j < 12; ++j) {
             int n = ns[j];
             mf_vec3 *c = pc[j], *u = pu[j];
