@@ -149,8 +149,8 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
  * p = 1.5707963252192132 + 1.6387276960562109 d + 0.35586584306581215 d^2
  * + 0.0045738615736021417 d^3, q = 1 + 1.6798660847363001 d
  * + 0.79599037681132534 d^2 + 0.094107260786142122 d^3 (Remez, 1.0e-9)
- * would bring that to 2.5e-7 K at two more multiply-adds per edge, more than
- * the clipped n-gons' margin against the published algorithm. */
+ * would bring that to about 2.5e-7 K at two more multiply-adds per edge
+ * (docs/ACCURACY.md: the trade). */
 MF__LTC_HOT mf_real mf__ts_p(mf_real d)
 {
     return MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
