@@ -125,6 +125,40 @@ static mf_real plain_ltc_polygon(const mf_real *m4, const mf_vec3 *p, int n)
     return MF_FABS(sum) * MF_R(0.15915494309189533577);
 }
 
+/* ---- baseline for n-gons: the published shader's algorithm (Heitz et al.
+ * 2016, selfshadow/ltc_code ltc_quad.fs) generalized to n vertices: the
+ * inverse transform (its sparse 5-product form, as the library), Sutherland-
+ * Hodgman clipping to z >= 0 into a vertex buffer (crossing points
+ * a.z b - b.z a as in ClipQuadToHorizon), normalization, and per edge its
+ * IntegrateEdge: the rational theta / sin theta fit times (a x b).z, with
+ * 0.5 / sqrt(1 - d^2) - fit beyond pi/2 ---- */
+static mf_real plain_rat_edge(mf_vec3 a, mf_vec3 b)
+{
+    mf_real x = mf_dot(a, b), y = MF_FABS(x);
+    mf_real na = MF_R(0.8543985) + (MF_R(0.4965155) + MF_R(0.0145206) * y) * y;
+    mf_real nb = MF_R(3.4175940) + (MF_R(4.1616724) + y) * y, v = na / nb;
+    mf_real ts = x > MF_R(0.0) ? v : MF_R(0.5) / MF_SQRT(mf_max(MF_R(1.0) - x * x, MF_R(1e-7))) - v;
+    return (a.x * b.y - a.y * b.x) * ts;
+}
+static mf_real plain_rat_polygon(const mf_real *Mi, const mf_vec3 *p, int n)
+{
+    mf_vec3 in[64], out[128];
+    int i, k = 0;
+    mf_real sum = MF_R(0.0);
+    for (i = 0; i < n; ++i)   /* M^-1 = [m0 0 m2; 0 m4 0; m6 0 m8] */
+        in[i] = mf_vec3_make(Mi[0] * p[i].x + Mi[2] * p[i].z, Mi[4] * p[i].y, Mi[6] * p[i].x + Mi[8] * p[i].z);
+    for (i = 0; i < n; ++i) {
+        mf_vec3 a = in[i], b = in[i + 1 == n ? 0 : i + 1];
+        if (a.z > 0) out[k++] = a;
+        if ((a.z > 0) != (b.z > 0))
+            out[k++] = mf_vec3_make(a.z * b.x - b.z * a.x, a.z * b.y - b.z * a.y, MF_R(0.0));
+    }
+    if (k < 3) return MF_R(0.0);
+    for (i = 0; i < k; ++i) out[i] = mf_normalize(out[i]);
+    for (i = 0; i < k; ++i) sum += plain_rat_edge(out[i], out[i + 1 == k ? 0 : i + 1]);
+    return MF_FABS(sum);
+}
+
 typedef double (*bench_fn)(const mf_ndf *d);
 
 /* ---- tabulated distributions ---- */
@@ -905,6 +939,7 @@ static void bench_sheen(void);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
 static void bench_ltc_shapes(void);
+static void bench_ltc_ngons(void);
 static void bench_ltc(void)
 {
     int i, k;
@@ -973,6 +1008,62 @@ static void bench_ltc(void)
         g_sink += s + (double)fr.albedo;
     }
     bench_ltc_shapes();
+    bench_ltc_ngons();
+}
+
+/* LTC n-gons, n = 3..32, against plain_rat_polygon in the same run: a
+ * regular n-gon given in the LTC's cosine space (moved by M), crossing the
+ * horizon with about half its vertices below it (clipped) or all above
+ * (unclipped); per extra vertex from n = 16 to 32 */
+static void bench_ltc_ngons(void)
+{
+    static const int ns[] = { 3, 4, 5, 6, 7, 8, 10, 12, 16, 20, 24, 32 };
+    mf_ltc l = mf_ltc_ggx(MF_R(0.7), MF_R(0.3));
+    mf_vec3 pc[12][32], pu[12][32];
+    double best[12][4], s = 0.0;
+    int i, j, k, it, reps = 1000;
+    for (j = 0; j < 12; ++j) {
+        int n = ns[j];
+        for (k = 0; k < n; ++k) {
+            double a = 6.283185307179586 * (k + 0.3) / n, qc[3], qu[3];
+            int r;
+            qc[0] = 1.0; qc[1] = 0.8 * cos(a); qc[2] = 0.8 * sin(a);           /* a vertical n-gon across the horizon */
+            qu[0] = 0.3 + 0.8 * cos(a); qu[1] = 0.2 - 0.8 * sin(a); qu[2] = 1.0; /* a horizontal one above */
+            for (r = 0; r < 3; ++r) {
+                mf_real *dc = r == 0 ? &pc[j][k].x : r == 1 ? &pc[j][k].y : &pc[j][k].z;
+                mf_real *du = r == 0 ? &pu[j][k].x : r == 1 ? &pu[j][k].y : &pu[j][k].z;
+                *dc = (mf_real)((double)l.M[3 * r] * qc[0] + (double)l.M[3 * r + 1] * qc[1] + (double)l.M[3 * r + 2] * qc[2]);
+                *du = (mf_real)((double)l.M[3 * r] * qu[0] + (double)l.M[3 * r + 1] * qu[1] + (double)l.M[3 * r + 2] * qu[2]);
+            }
+        }
+        for (k = 0; k < 4; ++k) best[j][k] = 1e30;
+    }
+    for (it = 0; it < 400; ++it)
+        for (j = 0; j < 12; ++j) {
+            int n = ns[j];
+            mf_vec3 *c = pc[j], *u = pu[j];
+            mf_real x0c = c[0].x, x0u = u[0].x;
+            double t[5];
+            t[0] = now_ns();
+            for (i = 0; i < reps; ++i) { c[0].x = x0c + (mf_real)(1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, c, n, 1); }
+            t[1] = now_ns();
+            for (i = 0; i < reps; ++i) { c[0].x = x0c + (mf_real)(1e-7 * (i & 7)); s += (double)plain_rat_polygon(l.Minv, c, n); }
+            t[2] = now_ns();
+            for (i = 0; i < reps; ++i) { u[0].x = x0u + (mf_real)(1e-7 * (i & 7)); s += (double)mf_ltc_integrate(&l, u, n, 1); }
+            t[3] = now_ns();
+            for (i = 0; i < reps; ++i) { u[0].x = x0u + (mf_real)(1e-7 * (i & 7)); s += (double)plain_rat_polygon(l.Minv, u, n); }
+            t[4] = now_ns();
+            c[0].x = x0c; u[0].x = x0u;
+            for (k = 0; k < 4; ++k)
+                if ((t[k + 1] - t[k]) / reps < best[j][k]) best[j][k] = (t[k + 1] - t[k]) / reps;
+        }
+    for (j = 0; j < 12; ++j)
+        printf("bench ltc_ngon_%d clipped=%.2f ratio=%.3f plain=%.2f unclipped=%.2f ratio=%.3f plain=%.2f\n", ns[j],
+               best[j][0], best[j][0] / best[j][1], best[j][1], best[j][2], best[j][2] / best[j][3], best[j][3]);
+    printf("bench ltc_ngon_per_vertex clipped=%.2f ratio=%.3f plain=%.2f unclipped=%.2f ratio=%.3f plain=%.2f\n",
+           (best[11][0] - best[8][0]) / 16, (best[11][0] - best[8][0]) / (best[11][1] - best[8][1]), (best[11][1] - best[8][1]) / 16,
+           (best[11][2] - best[8][2]) / 16, (best[11][2] - best[8][2]) / (best[11][3] - best[8][3]), (best[11][3] - best[8][3]) / 16);
+    g_sink += s;
 }
 
 /* LTC light shapes: a disk (exact cone form factor) against the plain way,
@@ -1073,6 +1164,10 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && !strcmp(argv[1], "beckmann_vndf")) {   /* one section only */
         bench_beckmann_vndf();
+        return 0;
+    }
+    if (argc > 1 && !strcmp(argv[1], "ltc_ngon")) {   /* n-gons only */
+        bench_ltc_ngons();
         return 0;
     }
     if (argc > 1 && !strcmp(argv[1], "ltc")) {

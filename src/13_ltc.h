@@ -143,7 +143,14 @@ MF_INLINE mf_vec3 mf_ltc_sample(const mf_ltc *l, mf_real u1, mf_real u2)
 
 /* theta / sin theta for d = cos theta in [0, 1]: a (2, 2) rational fit,
  * relative error 5.6e-7 (minimax in the relative error, fitted in long
- * double; a (3, 3) fit reaches 1.1e-9 at two more multiply-adds). */
+ * double). Each edge then errs by at most about 5.6e-7 theta, so a polygon's
+ * float error is bounded by about 1e-6 K relative, K = (sum of its edge
+ * lengths theta) / |2 pi form factor| (tests/test_ltc.c). The (3, 3) fit
+ * p = 1.5707963252192132 + 1.6387276960562109 d + 0.35586584306581215 d^2
+ * + 0.0045738615736021417 d^3, q = 1 + 1.6798660847363001 d
+ * + 0.79599037681132534 d^2 + 0.094107260786142122 d^3 (Remez, 1.0e-9)
+ * would bring that to about 2.5e-7 K at two more multiply-adds per edge
+ * (docs/ACCURACY.md: the trade). */
 MF__LTC_HOT mf_real mf__ts_p(mf_real d)
 {
     return MF_R(1.5707954524054327) + d * (MF_R(0.90581169693094948) + d * MF_R(0.026032047669933955));
@@ -417,10 +424,82 @@ MF_INLINE mf_real mf__quad_sum(const mf_real *A, const mf_vec3 *p)
     return (n0 * q1 + n1 * q0) / (q0 * q1);
 }
 
-/* Other polygons above the horizon in blocks of 16 vertices (transform and
- * normalize into three scalar buffers, then the edges as one fraction, q
- * below 2.5^16); the first vertex below the horizon hands over to the
- * clipping loop. */
+/* A triangle as the quad above: in scalar temporaries, its three edges
+ * over one division above the horizon; crossing it, as the quad
+ * (v0, v1, v2, v2), whose zero edge v2 v2 adds 0. */
+MF_INLINE mf_real mf__tri_sum(const mf_real *A, const mf_vec3 *p)
+{
+    mf_real x0 = p[0].x, y0 = p[0].y, z0 = p[0].z, x1 = p[1].x, y1 = p[1].y, z1 = p[1].z;
+    mf_real x2 = p[2].x, y2 = p[2].y, z2 = p[2].z, n0, q0, n1, q1;
+    int cfg;
+    if (!A) {
+    } else if (MF__LTC_SPARSE(A)) {
+        MF__LTC_XF_SPARSE(A, x0, y0, z0); MF__LTC_XF_SPARSE(A, x1, y1, z1); MF__LTC_XF_SPARSE(A, x2, y2, z2);
+    } else {
+        MF__LTC_XF(A, x0, y0, z0); MF__LTC_XF(A, x1, y1, z1); MF__LTC_XF(A, x2, y2, z2);
+    }
+    cfg = (z0 > MF_R(0.0)) | (z1 > MF_R(0.0)) << 1 | (z2 > MF_R(0.0)) << 2;
+    if (cfg != 7) return mf__quad_clipped(x0, y0, z0, x1, y1, z1, x2, y2, z2, x2, y2, z2, cfg | (cfg & 4) << 1);
+    MF__LTC_UNIT(x0, y0, z0); MF__LTC_UNIT(x1, y1, z1); MF__LTC_UNIT(x2, y2, z2);
+    n0 = n1 = MF_R(0.0); q0 = q1 = MF_R(1.0);
+    mf__edge_add(x0, y0, z0, x1, y1, z1, &n0, &q0); mf__edge_add(x1, y1, z1, x2, y2, z2, &n0, &q0);
+    mf__edge_add(x2, y2, z2, x0, y0, z0, &n1, &q1);
+    return (n0 * q1 + n1 * q0) / (q0 * q1);
+}
+
+/* The clipped rest of a polygon, streamed: vertices i..n-1 are transformed
+ * and (those above the horizon) normalized once each, and every edge is
+ * summed as it is met, so no vertex buffer is needed and any n works. An
+ * edge leaving the horizon ends at its exit point, one entering it starts at
+ * its entry point, and the horizon arc from the exit point to the next entry
+ * point joins them (the first entry, met before any exit, waits for the last
+ * exit). (ax, ay, az) is vertex i-1, unit when above; (fx, fy, fz) is vertex
+ * 0, unit when above. The horizon point u.z d - d.z u of an edge from u
+ * (above) to d (below) is a positive combination, so u may be unit. */
+/* one vertex (x, y, z) of the clipping stream below, unit when above */
+#define MF__LTC_CLIP_STEP() do { \
+        if (az > MF_R(0.0)) { \
+            if (z > MF_R(0.0)) sum += mf__edge_zs(ax, ay, az, x, y, z); \
+            else {   /* leaves */ \
+                MF__LTC_HORIZON(ex, ey, ax, ay, az, x, y, z); \
+                sum += mf__edge_zs(ax, ay, az, ex, ey, MF_R(0.0)); \
+                have_exit = 1; \
+            } \
+        } else if (z > MF_R(0.0)) {   /* enters */ \
+            MF__LTC_HORIZON(hx, hy, x, y, z, ax, ay, az); \
+            if (have_exit) sum += mf__edge_z_horizon(ex, ey, hx, hy); \
+            else { gx = hx; gy = hy; first_entry = 1; } \
+            sum += mf__edge_zs(hx, hy, MF_R(0.0), x, y, z); \
+        } \
+        ax = x; ay = y; az = z; \
+    } while (0)
+MF__LTC_NOINLINE mf_real mf__ngon_clipped(const mf_real *A, const mf_vec3 *p, int n, int i, mf_real sum,
+                                          mf_real ax, mf_real ay, mf_real az, mf_real fx, mf_real fy, mf_real fz)
+{
+    mf_real x, y, z, ex = MF_R(0.0), ey = MF_R(0.0), hx, hy, gx = MF_R(0.0), gy = MF_R(0.0);
+    int first_entry = 0, have_exit = 0;
+    if (A && MF__LTC_SPARSE(A))   /* the loop per form of A */
+        for (; i < n; ++i) {
+            x = p[i].x; y = p[i].y; z = p[i].z;
+            MF__LTC_XF_SPARSE(A, x, y, z);
+            if (z > MF_R(0.0)) MF__LTC_UNIT(x, y, z);
+            MF__LTC_CLIP_STEP();
+        }
+    else
+        for (; i < n; ++i) {
+            x = p[i].x; y = p[i].y; z = p[i].z;
+            if (A) MF__LTC_XF(A, x, y, z);
+            if (z > MF_R(0.0)) MF__LTC_UNIT(x, y, z);
+            MF__LTC_CLIP_STEP();
+        }
+    x = fx; y = fy; z = fz;   /* back to vertex 0 */
+    MF__LTC_CLIP_STEP();
+    return first_entry ? sum + mf__edge_z_horizon(ex, ey, gx, gy) : sum;
+}
+
+/* Other polygons: above the horizon in blocks of 16 vertices (transform and
+ * normalize into three scalar buffers, then the edges); the first vertex
+ * below the horizon hands the rest to the streaming clip above. */
 MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
 {
     mf_real ux[16], uy[16], uz[16], x, y, z, px = MF_R(0.0), py = MF_R(0.0), pz = MF_R(0.0);
@@ -443,8 +522,15 @@ MF__LTC_NOINLINE mf_real mf__ngon_sum(const mf_real *A, const mf_vec3 *p, int n)
         px = ux[m - 1]; py = uy[m - 1]; pz = uz[m - 1];
     }
     return sum + mf__edge_zs(px, py, pz, fx, fy, fz);
-clip:
-    return mf__polygon_clipped(A, p, n);
+clip:   /* vertex base + k is below: the edges so far, then the rest */
+    if (base + k == 0) { px = fx = x; py = fy = y; pz = fz = z; k = 1; }
+    else if (k > 0) {
+        if (base == 0) { fx = ux[0]; fy = uy[0]; fz = uz[0]; }
+        else sum += mf__edge_zs(px, py, pz, ux[0], uy[0], uz[0]);
+        for (m = 0; m + 1 < k; ++m) sum += mf__edge_zs(ux[m], uy[m], uz[m], ux[m + 1], uy[m + 1], uz[m + 1]);
+        px = ux[k - 1]; py = uy[k - 1]; pz = uz[k - 1];
+    }
+    return mf__ngon_clipped(A, p, n, base + k, sum, px, py, pz, fx, fy, fz);
 }
 
 /* The signed sum of the polygon transformed by A, clipped at the horizon. */
@@ -452,6 +538,7 @@ MF_INLINE mf_real mf__polygon_sum(const mf_real *A, const mf_vec3 *p, int n)
 {
     if (!p || n < 3) return MF_R(0.0);
     if (n == 4) return mf__quad_sum(A, p);
+    if (n == 3) return mf__tri_sum(A, p);
     return mf__ngon_sum(A, p, n);
 }
 
