@@ -2734,7 +2734,9 @@ MF_FORCE_INLINE mf_real mf_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3
  * the critical cosine mu_c = sqrt(1 - eta^2)), conductor eta + i k. On each
  * side of mu_c (0 when eta >= 1), 8 panels of 8-point Gauss-Legendre in t,
  * mu = mu_c -+ len t^2, which smooths the square root at the critical angle;
- * within 1e-8 of a dense integral in double, 1e-6 in float (test_materials). */
+ * within 1e-8 of a dense integral in double, 1e-6 in float (test_materials).
+ * Per material: 128 Fresnel evaluations a call (bench fresnel_avg), so
+ * compute F_avg once with the material's eta and k, never per sample. */
 MF_COLD mf_real mf_fresnel_dielectric_average(mf_real eta);
 MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k);
 
@@ -5168,7 +5170,9 @@ MF_INLINE mf_real mf_fresnel_f82(mf_real cos_theta, mf_real f0, mf_real tint)
  * f0 and tint clamped to [0, 1] (NaN gives 0). Unclamped it is
  * f0 + (1 - f0)/21 - a/126; where the formula is negative (one interval of mu
  * at most: F/(1 - mu)^5 is convex in 1 - mu) that interval's part is taken
- * back, in closed form between its two roots (found by Newton's method). */
+ * back, in closed form between its two roots (found by Newton's method).
+ * Per material (a few Fresnel evaluations' worth, bench fresnel_avg):
+ * compute it once per f0 and tint. */
 MF_COLD mf_real mf_fresnel_f82_average(mf_real f0, mf_real tint);
 
 /* Thin-film interference (Belcour & Barla 2017, Eq. 1-2): the unpolarized

@@ -936,6 +936,7 @@ static const char *const core_sections[] = { "ggx", "kinds", "transformed", "lea
 static void bench_core(const struct bench_kind *ks, int sections);
 static void bench_lobes(void);
 static void bench_sheen(void);
+static void bench_fresnel_avg(void);
 /* LTC: table lookup, quad above the horizon, quad crossing it, per vertex,
  * against the plain baseline; fitting */
 static void bench_ltc_shapes(void);
@@ -1190,6 +1191,10 @@ int main(int argc, char **argv)
         bench_sheen();
         return 0;
     }
+    if (argc > 1 && !strcmp(argv[1], "fresnel_avg")) {
+        bench_fresnel_avg();
+        return 0;
+    }
     if (argc > 1 && !strncmp(argv[1], "core:", 5)) {   /* one core section */
         int sec = 0;
         for (i = 0; i < CORE_SECTIONS; ++i)
@@ -1210,6 +1215,7 @@ int main(int argc, char **argv)
     bench_microsurface();
     bench_lobes();
     bench_sheen();
+    bench_fresnel_avg();
     return g_sink == g_sink ? 0 : 1;
 }
 
@@ -1446,4 +1452,42 @@ static void bench_sheen(void)
     printf("bench sheen_sample %.2f cosine=%.2f ratio=%.2f\n", to, tb, to / tb);
     run_pair(b_cos_pdf, b_sheen_pdf, NULL, &tb, &to);
     printf("bench sheen_pdf %.2f cosine=%.2f ratio=%.2f\n", to, tb, to / tb);
+}
+
+/* Fresnel averages (per material: 128 Fresnel evaluations each) against one
+ * mf_fresnel_conductor evaluation; the albedo of the kinds without a table
+ * (adaptive quadrature, per material) and the per-sample ms lobe. */
+static void bench_fresnel_avg(void)
+{
+    double t0, t1, s = 0.0, base;
+    int i, n = 20000;
+    t0 = now_ns();
+    for (i = 0; i < n; ++i) s += (double)mf_fresnel_conductor(MF_R(0.1) + MF_R(0.9) * (mf_real)(i & 255) / MF_R(255.0), MF_R(0.2), MF_R(3.9));
+    t1 = now_ns();
+    base = (t1 - t0) / n;
+    t0 = now_ns();
+    for (i = 0; i < n; ++i) s += (double)mf_fresnel_conductor_average(MF_R(0.2) + MF_R(1e-4) * (mf_real)(i & 255), MF_R(3.9));
+    t1 = now_ns();
+    printf("bench fresnel_conductor_average %.1f fresnel_conductor=%.2f ratio=%.0f\n", (t1 - t0) / n, base, (t1 - t0) / n / base);
+    t0 = now_ns();
+    for (i = 0; i < n; ++i) s += (double)mf_fresnel_dielectric_average(MF_R(1.5) + MF_R(1e-4) * (mf_real)(i & 255));
+    t1 = now_ns();
+    printf("bench fresnel_dielectric_average %.1f fresnel_conductor=%.2f ratio=%.0f\n", (t1 - t0) / n, base, (t1 - t0) / n / base);
+    t0 = now_ns();
+    for (i = 0; i < n; ++i) s += (double)mf_fresnel_f82_average(MF_R(0.9), MF_R(0.7) + MF_R(1e-4) * (mf_real)(i & 255));
+    t1 = now_ns();
+    printf("bench fresnel_f82_average %.1f fresnel_conductor=%.2f ratio=%.0f\n", (t1 - t0) / n, base, (t1 - t0) / n / base);
+    {
+        mf_ndf r = mf_rotated(mf_ggx(MF_R(0.2), MF_R(0.4)), MF_R(0.7)), g = mf_gtr(MF_R(0.2), MF_R(1.5));
+        mf_vec3 wo = mf_vec3_make(MF_R(0.6), MF_R(0.0), MF_R(0.8));
+        t0 = now_ns(); s += (double)mf_albedo(&r, wo); t1 = now_ns();
+        printf("bench albedo_rotated_ggx_us %.0f\n", (t1 - t0) * 1e-3);
+        t0 = now_ns(); s += (double)mf_albedo(&g, wo); t1 = now_ns();
+        printf("bench albedo_gtr_us %.0f\n", (t1 - t0) * 1e-3);
+        t0 = now_ns(); s += (double)mf_albedo_average(&r); t1 = now_ns();
+        printf("bench albedo_average_rotated_ggx_us %.0f\n", (t1 - t0) * 1e-3);
+        t0 = now_ns(); s += (double)mf_brdf_ms_sample(&g, wo, MF_R(0.3), MF_R(0.6)).weight; t1 = now_ns();
+        printf("bench brdf_ms_sample_gtr_us %.0f\n", (t1 - t0) * 1e-3);
+    }
+    g_sink += s;
 }

@@ -137,7 +137,9 @@ MF_FORCE_INLINE mf_real mf_brdf_pdf_bounded(const mf_ndf *d, mf_vec3 wo, mf_vec3
  * the critical cosine mu_c = sqrt(1 - eta^2)), conductor eta + i k. On each
  * side of mu_c (0 when eta >= 1), 8 panels of 8-point Gauss-Legendre in t,
  * mu = mu_c -+ len t^2, which smooths the square root at the critical angle;
- * within 1e-8 of a dense integral in double, 1e-6 in float (test_materials). */
+ * within 1e-8 of a dense integral in double, 1e-6 in float (test_materials).
+ * Per material: 128 Fresnel evaluations a call (bench fresnel_avg), so
+ * compute F_avg once with the material's eta and k, never per sample. */
 MF_COLD mf_real mf_fresnel_dielectric_average(mf_real eta);
 MF_COLD mf_real mf_fresnel_conductor_average(mf_real eta, mf_real k);
 

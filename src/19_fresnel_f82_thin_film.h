@@ -44,7 +44,9 @@ MF_INLINE mf_real mf_fresnel_f82(mf_real cos_theta, mf_real f0, mf_real tint)
  * f0 and tint clamped to [0, 1] (NaN gives 0). Unclamped it is
  * f0 + (1 - f0)/21 - a/126; where the formula is negative (one interval of mu
  * at most: F/(1 - mu)^5 is convex in 1 - mu) that interval's part is taken
- * back, in closed form between its two roots (found by Newton's method). */
+ * back, in closed form between its two roots (found by Newton's method).
+ * Per material (a few Fresnel evaluations' worth, bench fresnel_avg):
+ * compute it once per f0 and tint. */
 MF_COLD mf_real mf_fresnel_f82_average(mf_real f0, mf_real tint);
 
 /* Thin-film interference (Belcour & Barla 2017, Eq. 1-2): the unpolarized
