@@ -1455,8 +1455,8 @@ static void bench_sheen(void)
 }
 
 /* Fresnel averages (per material: 128 Fresnel evaluations each) against one
- * mf_fresnel_conductor evaluation; the albedo of the kinds without a table
- * (adaptive quadrature, per material) and the per-sample ms lobe. */
+ * mf_fresnel_conductor evaluation; the albedo of kinds without a built-in
+ * table (a quadrature per call) and the per-sample ms lobe. */
 static void bench_fresnel_avg(void)
 {
     double t0, t1, s = 0.0, base;
