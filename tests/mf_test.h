@@ -67,6 +67,14 @@ double mft_chi2(const double *obs, const double *expct, int n, int *dof);
 
 int mft_finite(double x);
 
+/* The robustness checks' special values: v = 0, -0, 1e-30, 1e-7, 0.5, 1, 1.5,
+ * 1e30, inf, -1, NaN, -inf; d = the pole, two views, grazing, the +x axis,
+ * below, zero, non-unit, NaN and Inf components, near the pole */
+void mft_special_values(mf_real v[12], mf_vec3 d[10]);
+/* A sampler's record on any input: empty (pdf 0, weight 0), or a finite
+ * upper-hemisphere direction with pdf in (0, MF_BIG) and a weight in [0, MF_BIG] */
+int mft_record_ok(mf_sample r);
+
 mf_vec3 mft_dir(double theta, double phi);
 
 /* Shared checks (test_sampling.c, test_brdf.c): chi-square of mf_sample_D

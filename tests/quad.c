@@ -232,3 +232,21 @@ double mft_median(double *v, int n)
     qsort(v, (size_t)n, sizeof(double), cmp_double);
     return v[n / 2];
 }
+
+void mft_special_values(mf_real v[12], mf_vec3 d[10])
+{
+    volatile double zero = 0.0;
+    mf_real inf_ = (mf_real)(1.0 / zero), nan_ = (mf_real)(zero / zero);
+    v[0] = 0; v[1] = -v[0]; v[2] = MF_R(1e-30); v[3] = MF_R(1e-7); v[4] = MF_R(0.5); v[5] = 1; v[6] = MF_R(1.5);
+    v[7] = MF_R(1e30); v[8] = inf_; v[9] = -1; v[10] = nan_; v[11] = -inf_;
+    d[0] = mf_vec3_make(0, 0, 1); d[1] = mft_dir(1.0, 0.5); d[2] = mft_dir(1.5706, 2.0); d[3] = mf_vec3_make(1, 0, 0);
+    d[4] = mf_vec3_make(0, 0, -1); d[5] = mf_vec3_make(0, 0, 0); d[6] = mf_vec3_make(3, 4, 5); d[7] = mf_vec3_make(nan_, 0, 1);
+    d[8] = mf_vec3_make(inf_, 0, 1); d[9] = mft_dir(1e-7, 0.0);
+}
+
+int mft_record_ok(mf_sample r)
+{
+    if (r.lobe == MF_LOBE_NONE) return r.pdf == 0 && r.weight == 0;
+    return r.pdf > 0 && r.pdf < MF_BIG && r.weight >= 0 && r.weight <= MF_BIG && r.wi.z > 0 &&
+           mft_finite((double)r.wi.x) && mft_finite((double)r.wi.y);
+}
