@@ -140,10 +140,8 @@ void test_robust(void)
                     for (j = 0; j < 7; ++j) {
                         mf_sample se = mf_eon_sample(dirs[i], x, y, (mf_real)us[j], (mf_real)us[(j + 3) % 7]);
                         mf_sample ss = mf_sheen_sample(dirs[i], x, (mf_real)us[j], (mf_real)us[(j + 3) % 7]);
-                        if (se.lobe == MF_LOBE_NONE ? (se.pdf != 0 || se.weight != 0)
-                                                    : (!unit_or_zero(se.wi) || !(se.pdf > 0) || !mft_finite(se.pdf) || !mft_finite(se.weight) || se.weight < 0)) ++bad_eon;
-                        if (ss.lobe == MF_LOBE_NONE ? (ss.pdf != 0 || ss.weight != 0)
-                                                    : (!unit_or_zero(ss.wi) || !(ss.pdf > 0) || !mft_finite(ss.pdf) || !mft_finite(ss.weight) || ss.weight < 0)) ++bad_sheen;
+                        if (!mft_record_ok(se) || !unit_or_zero(se.wi)) ++bad_eon;
+                        if (!mft_record_ok(ss) || !unit_or_zero(ss.wi)) ++bad_sheen;
                     }
                 }
             }
