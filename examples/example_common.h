@@ -39,6 +39,22 @@ static inline void rng_seed(rng *r, uint64_t pixel)
 }
 
 /* 1 if all three values are finite */
+/* Sky radiance along the world direction d (y is up): horizon-to-zenith
+ * gradient above, darker ground below, with a sharp horizon line (the
+ * spheres and lobes examples) */
+static inline void ex_sky(mf_vec3 d, mf_real out[3])
+{
+    static const mf_real hor[3] = { MF_R(1.0), MF_R(0.9), MF_R(0.75) };
+    static const mf_real zen[3] = { MF_R(0.2), MF_R(0.4), MF_R(0.9) };
+    static const mf_real gnd[3] = { MF_R(0.12), MF_R(0.1), MF_R(0.08) };
+    int c;
+    if (d.y >= MF_R(0.0)) {
+        mf_real t = MF_SQRT(mf_min(d.y, MF_R(1.0)));
+        for (c = 0; c < 3; ++c) out[c] = hor[c] + (zen[c] - hor[c]) * t;
+    } else {
+        for (c = 0; c < 3; ++c) out[c] = gnd[c] * (MF_R(1.0) + MF_R(0.5) * d.y);
+    }
+}
 static inline int finite3(const mf_real v[3])
 {
     int c;

@@ -105,23 +105,10 @@ static mf_real metal_fms[COLS][3];
 static mf_real film_F[COLS][NFILM][3];
 
 /* ---- environment: the furnace (1 everywhere) or the sky (y up) */
-static void sky(mf_vec3 d, mf_real out[3])
-{
-    static const mf_real hor[3] = { MF_R(1.0), MF_R(0.9), MF_R(0.75) };
-    static const mf_real zen[3] = { MF_R(0.2), MF_R(0.4), MF_R(0.9) };
-    static const mf_real gnd[3] = { MF_R(0.12), MF_R(0.1), MF_R(0.08) };
-    int c;
-    if (d.y >= MF_R(0.0)) {
-        mf_real t = MF_SQRT(mf_min(d.y, MF_R(1.0)));
-        for (c = 0; c < 3; ++c) out[c] = hor[c] + (zen[c] - hor[c]) * t;
-    } else {
-        for (c = 0; c < 3; ++c) out[c] = gnd[c] * (MF_R(1.0) + MF_R(0.5) * d.y);
-    }
-}
 static void env(int furnace, mf_vec3 d, mf_real out[3])
 {
     if (furnace) out[0] = out[1] = out[2] = MF_R(1.0);
-    else sky(d, out);
+    else ex_sky(d, out);
 }
 /* the sun: a directional light of irradiance sun_e (sky only) */
 static const mf_real sun_e[3] = { MF_R(3.0), MF_R(2.8), MF_R(2.5) };

@@ -58,21 +58,6 @@ static mf_ndf make_ndf(int row, mf_real a)
     }
 }
 
-/* Sky radiance along the world direction d (y is up): horizon-to-zenith
- * gradient above, darker ground below, with a sharp horizon line. */
-static void sky(mf_vec3 d, mf_real out[3])
-{
-    static const mf_real hor[3] = { MF_R(1.0), MF_R(0.9), MF_R(0.75) };
-    static const mf_real zen[3] = { MF_R(0.2), MF_R(0.4), MF_R(0.9) };
-    static const mf_real gnd[3] = { MF_R(0.12), MF_R(0.1), MF_R(0.08) };
-    int c;
-    if (d.y >= MF_R(0.0)) {
-        mf_real t = MF_SQRT(mf_min(d.y, MF_R(1.0)));
-        for (c = 0; c < 3; ++c) out[c] = hor[c] + (zen[c] - hor[c]) * t;
-    } else {
-        for (c = 0; c < 3; ++c) out[c] = gnd[c] * (MF_R(1.0) + MF_R(0.5) * d.y);
-    }
-}
 
 /* Radiance seen along -z at cell-local position (x, y), |(x, y)| < 1 on the
  * sphere; the sky term (one sample from u1, u2) is scaled by sky_w, 0 skips it. */
@@ -103,7 +88,7 @@ static void shade(const mf_ndf *d, mf_real x, mf_real y, mf_real sky_w, mf_real 
     wi = s.wi;
     f = sky_w * s.weight;
     wh = mf_normalize(mf_add(wo, wi));
-    sky(mf_add(mf_add(mf_scale(t, wi.x), mf_scale(b, wi.y)), mf_scale(n, wi.z)), sk);
+    ex_sky(mf_add(mf_add(mf_scale(t, wi.x), mf_scale(b, wi.y)), mf_scale(n, wi.z)), sk);
     for (c = 0; c < 3; ++c) out[c] += f * mf_fresnel_conductor(mf_dot(wi, wh), eta[c], kap[c]) * sk[c];
 }
 
