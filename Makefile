@@ -32,10 +32,10 @@ else
 EXR_STEPS  := exr_skip
 endif
 
-.PHONY: fuzz fuzz-build check-all api kinds prefix history warnings config fastmath package readme include_cost
+.PHONY: fuzz fuzz-build check-all check-float api kinds prefix history warnings config fastmath package readme include_cost
 .PHONY: all test check test-c test-cpp asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table sheen-table tools \
-        $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip quick fastmath fuzz \
+        $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
@@ -165,17 +165,15 @@ $(BUILD)/quick_$(1): $(BUILD)/$(1)/main_quick.o $(patsubst tests/%.c,$(BUILD)/$(
 	@echo "  LINK    $$@"
 	$(Q)$(LINK_$(1)) $$^ -o $$@ -lm
 step-$(1): $(BUILD)/$(RUN_$(1))_$(1) | $(RES)
-	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(ARGS_$(1))
+	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(if $$(filter test,$$(RUN_$(1))),$$(FULL),--quick)
 endef
-# make test: the C builds run every module, the C++ builds the quick ones
+# make test: the C double build runs every module, the C float and C++ float
+# builds the quick ones (make check-float: every module in float, run by
+# .ci/run too; make check-all: every module in all four builds, full size)
 RUN_c_double := test
-RUN_c_float := test
+RUN_c_float := quick
 RUN_cpp_double := quick
 RUN_cpp_float := quick
-ARGS_c_double = $(FULL)
-ARGS_c_float = $(FULL)
-ARGS_cpp_double = $(if $(filter test,$(RUN_cpp_double)),$(FULL),--quick)
-ARGS_cpp_float = $(if $(filter test,$(RUN_cpp_float)),$(FULL),--quick)
 $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 
 # ---- make test: every step streams its output with [step] in front of each
@@ -185,7 +183,7 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 # ---- campaigns: every module at full size (--full) in all four builds, the
 # ---- fuzz smoke run and the sanitizers.
 CHECK_STEPS := header api kinds prefix history warnings config fastmath package readme
-TEST_STEPS := include_cost $(CHECK_STEPS) c_double c_float examples $(EXR_STEPS) cpp_double cpp_float
+TEST_STEPS := include_cost $(CHECK_STEPS) c_double c_float examples $(EXR_STEPS) cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -248,25 +246,30 @@ tools:
 endif
 step-fuzz: | $(RES)
 	@$(RUN_STEP) fuzz $(RES)/fuzz tests sh tests/fuzz/smoke.sh "$(MAKE)" $(BUILD)/fuzz $(FUZZ_SMOKE) $(FUZZ_TARGETS)
-step-quick: $(BUILD)/quick_c_float | $(RES)
-	@$(RUN_STEP) quick $(RES)/quick tests ./$< --quick
 
 # include_cost runs first and alone (a timing); then the rest in parallel
 test:
 	@$(MAKE) --no-print-directory step-include_cost
 	@$(MAKE) --no-print-directory $(filter-out step-include_cost,$(TEST_STEPS:%=step-%))
 	@$(SUM) $(TEST_STEPS)
-# smoke test, under 30 s on a fresh clone: the header is current, the quick modules
-check: step-header step-quick
-	@$(SUM) header quick
+# smoke test, under 30 s on a fresh clone: the header is current, the quick
+# modules in float (the same binary and step as make test's c_float)
+check: step-header step-c_float
+	@$(SUM) header c_float
 # make test, then every module at full size in all four builds, the fuzz
 # smoke run and the sanitizers
 check-all:
 	@$(MAKE) --no-print-directory step-include_cost
-	@$(MAKE) --no-print-directory FULL=--full RUN_cpp_double=test RUN_cpp_float=test \
-	  $(filter-out step-include_cost,$(TEST_STEPS:%=step-%)) step-fuzz step-asan_double step-asan_float
-	@$(SUM) $(TEST_STEPS) fuzz asan_double asan_float
-test-c: step-c_double step-c_float
+	@$(MAKE) --no-print-directory FULL=--full RUN_c_float=test RUN_cpp_double=test RUN_cpp_float=test \
+	  $(filter-out step-include_cost,$(TEST_STEPS:%=step-%)) step-cpp_double step-fuzz step-asan_double step-asan_float
+	@$(SUM) $(TEST_STEPS) cpp_double fuzz asan_double asan_float
+# every module in float (make test runs the quick ones there); .ci/run runs it
+# after make test
+check-float:
+	@$(MAKE) --no-print-directory RUN_c_float=test step-c_float
+	@$(SUM) c_float
+test-c:
+	@$(MAKE) --no-print-directory RUN_c_float=test step-c_double step-c_float
 	@$(SUM) c_double c_float
 test-cpp:
 	@$(MAKE) --no-print-directory RUN_cpp_double=test RUN_cpp_float=test step-cpp_double step-cpp_float
