@@ -28,11 +28,13 @@ for case in "-DMF_NO_LEADR|" "-DMF_NO_LTC_TABLE|-DMF_USE_DOUBLE" "-DMF_NO_IBM|" 
   $CC -std=c99 $WARN -Werror $opt $prec -I. tests/optout_check.c -o $B/optout -lm || fail "opt-out '$opt $prec' (C)"
   $B/optout || fail "opt-out '$opt $prec' does not work"
 done
+echo "config check: module opt-outs: ok"
 $CXX -x c++ -std=c++11 $WARN -Werror $ALL_OUT -I. -c tests/optout_check.c -o $B/optout_cxx.o || fail "opt-out '$ALL_OUT' (C++)"
 for one in "-DMF_MALLOC(n)=malloc(n)" "-DMF_FREE(p)=free(p)"; do
   out=$($CC -std=c99 "$one" -I. -c tests/mix_impl.c -o $B/one.o 2>&1) && fail "$one alone compiled"
   echo "$out" | grep -q "define both or neither" || fail "$one alone: no clear #error"
 done
+echo "config check: the allocator pair: ok"
 $CC -std=c99 -O0 -I. -c tests/mix_impl.c -o $B/impl_f.o || fail "float implementation"
 $CC -std=c99 -O0 -DMF_USE_DOUBLE -I. -c tests/mix_impl.c -o $B/impl_d.o || fail "double implementation"
 out=$($CC -std=c99 -DMF_USE_DOUBLE -I. tests/mix_main.c $B/impl_f.o -o $B/mix_bad -lm 2>&1) && fail "double unit linked against a float implementation"
@@ -72,6 +74,7 @@ $CC -std=c99 -O2 $WARN -Werror -I. -c tests/guard_a.c -o $B/guard_a.o || fail "g
 $CC -std=c99 -O2 $WARN -Werror -DMF_USE_DOUBLE -I. -c tests/guard_b.c -o $B/guard_b.o || fail "guard_b.c (double)"
 $CC $B/guard_a.o $B/impl_f.o $B/guard_b.o $B/impl_d.o -o $B/guard_both -lm || fail "float and double units of inline calls, each precision with its implementation, do not link"
 $B/guard_both >/dev/null || fail "float and double units of inline calls disagree"
+echo "config check: precision mixing (inline-only units too, --gc-sections): ok"
 # the samplers need none of the large optional modules: left out, the
 # implementation compiles in a fraction of the time
 NO_BIG=$ALL_OUT
@@ -85,4 +88,4 @@ for prec in "" -DMF_USE_DOUBLE; do
     [ "$got" = "$ref" ] || fail "samples differ between $refc and $c $prec: $ref / $got"
   done
 done
-echo "config check: opt-outs, allocator pair, precision mixing (inline-only units too), samples the same under every compiler: ok"
+echo "config check: the samplers draw the same samples under every compiler: ok"
