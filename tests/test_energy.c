@@ -319,7 +319,8 @@ static void robust(void)
         for (k = 0; k < 3; ++k)
             for (i = 0; i < 8; ++i) {
                 double e = mf_albedo(&o[k], dirs[i]), e2 = mf_albedo_integrate(&o[k], dirs[i], 1);
-                double e3 = mf_albedo_integrate(&o[k], dirs[i], (i - 2) * 40);
+                /* panel counts -80 .. 200: 40 (i = 3, 8 unless --full) is the one in range */
+                double e3 = mf_albedo_integrate(&o[k], dirs[i], i == 3 && !mft_full ? 8 : (i - 2) * 40);
                 if (!(e >= 0 && e <= 1) || !(e2 >= 0 && e2 <= 1) || !(e3 >= 0 && e3 <= 1)) ++bad;
             }
     }
@@ -356,7 +357,7 @@ static void dielectric(void)
     static const double alphas[] = { 0.01, 0.03, 0.1, 0.2, 0.4, 0.6, 0.8, 1.0 };
     static const double mus[] = { 0.02, 0.1, 0.3, 0.6, 1.0 };
     const mf_real eta = MF_R(1.5);
-    const int n = 100000;
+    const int n = MFT_N(100000);
     int k, ia, im, side, i;
     char msg[400];
     for (k = 0; k < 2; ++k) {
