@@ -134,40 +134,47 @@ static double f_vis(double Xt, double Yt, void *p)
     double D;
     if (proj <= 0.0) return 0.0;
     D = (double)mf_D(c->d, m);
-    if (c->what == 0) return D * c2 * c2 * proj * jac;
     /* D_visible = max(0, v.m) D(m) / A(v) (Heitz 2014, Eq. 2; A = v.z (1 +
-     * Lambda) for a centred kind) per solid angle, dm = cos^3 dslope; A once
-     * per integral (mf_projected_area: the numerical Lambdas cost
-     * microseconds), mf_D_visible itself compared with it at every 61st node,
-     * its error measured against D / A (the v.m factor's scale) */
-    if (++c->k % 61 == 0) {
+     * Lambda) for a centred kind) per solid angle, dm = cos^3 dslope: the
+     * integrand of the area, over A (mf_projected_area, once per integral:
+     * the numerical Lambdas cost microseconds); mf_D_visible itself is
+     * compared with it at every 61st node, its error measured against D / A
+     * (the v.m factor's scale) */
+    if (c->what == 1 && ++c->k % 61 == 0) {
         double want = proj * sqrt(c2) * D / c->area, got = (double)mf_D_visible(c->d, c->v, m);
         double e = fabs(got - want) / (D / c->area + 1e-300);
         if (!(e <= c->worst)) c->worst = e;
     }
-    return D * c2 * c2 * proj / c->area * jac;
+    return D * c2 * c2 * proj * jac;
 }
 
-double mft_visible_integral(const mf_ndf *d, mf_vec3 v, int what)
+double mft_visible_integrals(const mf_ndf *d, mf_vec3 v, double *dvis)
 {
     vis_ctx c;
-    double nx, ny, s;
+    double nx, ny, s, r;
     mft_slope_map(d, c.A);
     c.jac = fabs(c.A[0] * c.A[3] - c.A[1] * c.A[2]);
     /* slope . v_xy = X . (A^T v_xy): the visibility bound is straight along A^T v_xy */
     nx = c.A[0] * v.x + c.A[2] * v.y; ny = c.A[1] * v.x + c.A[3] * v.y; s = sqrt(nx * nx + ny * ny);
-    c.d = d; c.v = v; c.vz = v.z; c.s = s; c.what = what; c.k = 0; c.worst = 0.0;
-    c.area = what == 1 ? (double)mf_projected_area(d, v) : 1.0;
+    c.d = d; c.v = v; c.vz = v.z; c.s = s; c.what = dvis != NULL; c.k = 0; c.worst = 0.0;
+    c.area = dvis ? (double)mf_projected_area(d, v) : 1.0;
     if (s > 0.0) { c.cp = nx / s; c.sp = ny / s; } else { c.cp = 1.0; c.sp = 0.0; }
-    {
-        double r = mft_integrate2(f_vis, &c, -HUGE_VAL, s > 0.0 ? c.vz / s : HUGE_VAL, -HUGE_VAL, HUGE_VAL, 1.0, 1.0, 48);
-        /* an mf_D_visible that disagrees with D and Lambda fails the caller's check */
-        if (what == 1 && !(c.worst <= MFT_TOL(1e-9, 2e-5))) {
+    r = mft_integrate2(f_vis, &c, -HUGE_VAL, s > 0.0 ? c.vz / s : HUGE_VAL, -HUGE_VAL, HUGE_VAL, 1.0, 1.0, 48);
+    if (dvis) {
+        *dvis = r / c.area;
+        /* an mf_D_visible that disagrees with D and the area fails the caller's check */
+        if (!(c.worst <= MFT_TOL(1e-9, 2e-5))) {
             printf("    mf_D_visible differs from max(0, v.m) D / mf_projected_area by %.3g (scale D / area)\n", c.worst);
-            return HUGE_VAL;
+            *dvis = HUGE_VAL;
         }
-        return r;
     }
+    return r;
+}
+
+double mft_visible_integral(const mf_ndf *d, mf_vec3 v, int what)
+{
+    double dvis, area = mft_visible_integrals(d, v, what == 1 ? &dvis : NULL);
+    return what == 1 ? dvis : area;
 }
 
 /* ---- cells over the hemisphere for chi-square tests ---- */

@@ -12,6 +12,8 @@ double mft_scale(const mf_ndf *d);
 double mft_norm_integral(const mf_ndf *d);
 /* what = 0: integral D(m) max(0, v.m) dm = v.z (1 + Lambda); what = 1: integral D_v(m) dm */
 double mft_visible_integral(const mf_ndf *d, mf_vec3 v, int what);
+/* both at once: returns the first, *dvis the second (mf_D_visible checked on the way) */
+double mft_visible_integrals(const mf_ndf *d, mf_vec3 v, double *dvis);
 /* Cells over the hemisphere: (X, Y) = A^-1 slope, radius mapped by
  * a = (2/pi) atan(|(X, Y)|) into na rings, azimuth into np sectors. */
 typedef struct { int na, np; double A[4]; } mft_cells;   /* slope = A (X, Y), row-major */
