@@ -200,8 +200,10 @@ CHECK_history := sh tests/history_check.sh
 CHECK_warnings := sh tests/warnings.sh "$(CC)" "$(CXX)" "$(HAVE_CLANG)" "$(WARN)" $(BUILD)
 # module opt-outs, the allocator pair, precision mixing, determinism
 CHECK_config := sh tests/config_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
-# the NaN/Inf robustness subset built with -ffast-math, float and double
-CHECK_fastmath := sh tests/fastmath_check.sh "$(CC)" "$(TWARN)" $(BUILD)
+# the NaN/Inf robustness subset built with -ffast-math: float (FASTMATH, make
+# check-all: float and double)
+FASTMATH ?= float
+CHECK_fastmath := sh tests/fastmath_check.sh "$(CC)" "$(TWARN)" $(BUILD) "$(FASTMATH)"
 # the CMake package and pkg-config, when cmake is present
 CHECK_package := sh tests/package_check.sh "$(CC)" $(BUILD)
 CHECK_readme := sh tests/readme_check.sh "$(CC)" "$(CXX)" "$(WARN)" $(BUILD)
@@ -260,7 +262,7 @@ check: step-header step-c_float
 # smoke run and the sanitizers
 check-all:
 	@$(MAKE) --no-print-directory step-include_cost
-	@$(MAKE) --no-print-directory FULL=--full RUN_c_float=test RUN_cpp_double=test RUN_cpp_float=test \
+	@$(MAKE) --no-print-directory FULL=--full FASTMATH="float double" RUN_c_float=test RUN_cpp_double=test RUN_cpp_float=test \
 	  $(filter-out step-include_cost,$(TEST_STEPS:%=step-%)) step-cpp_double step-fuzz step-asan_double step-asan_float
 	@$(SUM) $(TEST_STEPS) cpp_double fuzz asan_double asan_float
 # every module in float (make test runs the quick ones there); .ci/run runs it

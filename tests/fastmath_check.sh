@@ -1,10 +1,11 @@
 #!/bin/sh
 # The NaN/Inf robustness subset (tests/fastmath_check.c) built with
-# -ffast-math, float and double (part of make test).
-# usage: sh tests/fastmath_check.sh CC "TWARN" BUILD_DIR
-CC=$1; TWARN=$2; B=$3
+# -ffast-math (part of make test: float, the default precision; make
+# check-all: float and double).
+# usage: sh tests/fastmath_check.sh CC "TWARN" BUILD_DIR [PRECISIONS]
+CC=$1; TWARN=$2; B=$3; PRECS=${4:-float double}
 mkdir -p "$B" || exit 1
-for prec in float double; do
+for prec in $PRECS; do
   def=; [ $prec = double ] && def=-DMF_USE_DOUBLE
   $CC -std=c99 -O2 -ffast-math $TWARN $def -I. tests/fastmath_check.c -o "$B/fastmath_$prec" -lm || exit 1
   "./$B/fastmath_$prec" >/dev/null || { echo "fastmath: the $prec build failed its checks"; exit 1; }

@@ -140,7 +140,7 @@ static double f_vis(double Xt, double Yt, void *p)
      * the numerical Lambdas cost microseconds); mf_D_visible itself is
      * compared with it at every 61st node, its error measured against D / A
      * (the v.m factor's scale) */
-    if (c->what == 1 && ++c->k % 61 == 0) {
+    if (c->what == 1 && ++c->k % 61 == 0 && D > 1e-30 * c->area) {   /* float: no subnormal values */
         double want = proj * sqrt(c2) * D / c->area, got = (double)mf_D_visible(c->d, c->v, m);
         double e = fabs(got - want) / (D / c->area + 1e-300);
         if (!(e <= c->worst)) c->worst = e;
