@@ -178,12 +178,13 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 
 # ---- make test: every step streams its output with [step] in front of each
 # ---- line; steps run in parallel (include_cost first, alone: it times the
-# ---- compiler); the last line is the total "N passed, N failed" and the exit
+# ---- compiler; then c_double, the longest, so that its run starts early);
+# ---- the last line is the total "N passed, N failed" and the exit
 # ---- status is non-zero on any failure. make check-all adds the long
 # ---- campaigns: every module at full size (--full) in all four builds, the
 # ---- fuzz smoke run and the sanitizers.
 CHECK_STEPS := header api kinds prefix history warnings config fastmath package readme
-TEST_STEPS := include_cost $(CHECK_STEPS) c_double c_float examples $(EXR_STEPS) cpp_float
+TEST_STEPS := include_cost c_double $(CHECK_STEPS) c_float examples $(EXR_STEPS) cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
