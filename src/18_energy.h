@@ -114,7 +114,7 @@ MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_v
  * mf_dielectric_bsdf). x is clamped to keep y <= 1. E1 and E2 are
  * tabulated at n_mu nodes mu = x^2 as mf_albedo_table, by quadrature over
  * the visible normals of the side of wo (panels as mf_albedo_integrate).
- * There are no built-in dielectric tables: build one per material. */
+ * GGX and Beckmann need no build: mf_dielectric_bsdf_ms below. */
 typedef struct mf_dielectric_ms_table {
     int n_mu;
     mf_real eta;
@@ -135,15 +135,50 @@ MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, m
                                               mf_real u1, mf_real u2, mf_real u3);
 MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
 
+/* Rough dielectrics without a build. mf_dielectric_albedo: the integral over
+ * the sphere of mf_dielectric_bsdf(d, wo, wi, eta, mode) |wi.z| dwi for wo on
+ * either side (single scattering, reflection plus transmission). In
+ * importance transport it is at most 1 (1 minus the energy single
+ * scattering loses); in radiance transport the transmitted part carries
+ * (eta_o / eta_i)^2, so from the side of the higher index it reaches up to
+ * eta^2 (or 1 / eta^2), from the other side it is below the importance one.
+ * mf_dielectric_bsdf_ms is the compensation lobe of mf_dielectric_ms_table
+ * (Kulla & Conty 2017, section 2.2, the shares and lobes above), with E1, E2,
+ * their averages and F_avg read from built-in tables for isotropic GGX and
+ * Beckmann (17_energy_table_dielectric.h, `make energy-table`): relative
+ * index e (index across over index of wo's side) as s = |e - 1| / (e + 1)
+ * (e and 1 / e share s, two sides e >= 1 and e < 1; 8 nodes to e = 3, beyond
+ * reads e = 3), 16 rows sqrt(alpha) in [0, 1] (alpha > 1 reads 1), 24
+ * columns sqrt(mu); the stored value is E minus the F = 1 albedo of
+ * mf_albedo, whose 64 x 64 table carries the grazing dip at mu ~ alpha, so
+ * the coarse dielectric grid only holds the smooth remainder; trilinear.
+ * The averages are exact for the interpolant, so the compensated BSDF
+ * conserves to the table's accuracy (white furnace: docs/ACCURACY.md).
+ * Anisotropic GGX / Beckmann read alpha = sqrt(ax ay). Every other mf_ndf,
+ * and every kind under MF_NO_ENERGY_TABLES, integrates on each call
+ * (mf_dielectric_albedo_integrate with one panel, 64 BSDF samples per
+ * albedo, twice that in radiance transport; each average 17 such albedos
+ * per side, 8 azimuths unless isotropic): exact but slow, build an
+ * mf_dielectric_ms_table once instead.
+ * mf_dielectric_bsdf_ms_sample draws the lobe as mf_dielectric_ms_table_sample
+ * (u3 picks the side, cosine on it); mf_dielectric_bsdf_ms_pdf is its density.
+ * eta as mf_dielectric_bsdf; 0 and no sample on bad input. */
+MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode);
+MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode);
+MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
+                                        mf_real u1, mf_real u2, mf_real u3);
+MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta);
+
 /* @impl */
 /* The albedo integrands at (u1, u2) of the unit square: eta = 0, f cos / pdf
  * at wi reflected about the visible normal m(u) of mf__sample_visible_smooth
  * (G2 / G1, smooth except where wi crosses the horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
  * and transmitted weights F (1 + lo) G2 and (1 - F) (1 + lo) G2 at the
  * visible normal m(u). 0 where there is no sample. */
-MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2)
+MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2, mf_real *vt)
 {
     mf_real v = MF_R(0.0);
+    *vt = MF_R(0.0);
     if (!(eta > MF_R(0.0))) {
         mf_vec3 m = mf__sample_visible_smooth(d, wo, u1, u2), wi = mf_reflect(wo, m);
         mf_real pdf;
@@ -158,28 +193,39 @@ MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf
         F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
         wr = mf_reflect(wo, m);
         if (wr.z > MF_R(0.0)) v += F * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wr);
-        if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0))
-            v += (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
+        if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0)) {
+            *vt = (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
+            if (!(*vt == *vt) || !(*vt < MF_BIG)) *vt = MF_R(0.0);
+            v += *vt;
+        }
     }
-    return v == v && v < MF_BIG ? v : MF_R(0.0);
+    if (v == v && v < MF_BIG) return v;
+    *vt = MF_R(0.0);
+    return MF_R(0.0);
 }
 
 /* The albedo by (8 panels)^2 Gauss-Legendre nodes over the unit square,
- * clamped to [0, 1]. */
-MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, int panels)
+ * clamped to [0, 1]; *tr (when not NULL) its transmitted part. */
+MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, int panels, mf_real *tr)
 {
-    double sum = 0.0, h = 1.0 / (double)panels;
+    double sum = 0.0, st = 0.0, h = 1.0 / (double)panels;
     int p1, p2, i, j;
     for (p1 = 0; p1 < panels; ++p1)
         for (i = 0; i < 8; ++i) {
             mf_real u1 = mf__gl_node01(p1, i, panels);
             for (p2 = 0; p2 < panels; ++p2)
                 for (j = 0; j < 8; ++j) {
-                    mf_real v = mf__albedo_weight(d, wo, eta, lo, u1, mf__gl_node01(p2, j, panels));
-                    if (v != MF_R(0.0)) sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
+                    mf_real vt, v = mf__albedo_weight(d, wo, eta, lo, u1, mf__gl_node01(p2, j, panels), &vt);
+                    if (v != MF_R(0.0)) {
+                        sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
+                        st += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)vt;
+                    }
                 }
         }
     sum *= h * h;
+    st *= h * h;
+    if (tr) *tr = (mf_real)(st > 0.0 ? (st < sum ? st : sum) : 0.0);
+    if (tr && sum > 1.0) *tr = (mf_real)(st / sum);
     return sum > 0.0 ? (sum < 1.0 ? (mf_real)sum : MF_R(1.0)) : MF_R(0.0);
 }
 
@@ -189,7 +235,7 @@ MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
     if (!d || !mf__ndf_known(d->type) || panels < 1 || panels > 64) return MF_R(0.0);
     if (!(wo.z > MF_R(0.0)) || !(wo.z <= MF_R(1.0)) || !(wo.x == wo.x) || !(wo.y == wo.y)) return MF_R(0.0);
     d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
-    return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels);
+    return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels, 0);
 }
 
 /* 2 int_0^1 e(x) mu dmu with mu = x^2 (dmu = 2 x dx) for e piecewise linear
@@ -391,7 +437,7 @@ MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_rea
     if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(wo.x == wo.x) || !(wo.y == wo.y) || !(MF_FABS(wo.z) <= MF_R(1.0))) return MF_R(0.0);
     if (!(wo.z != MF_R(0.0))) return MF_R(0.0);
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; }   /* as mf_dielectric_sample */
-    return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels);
+    return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels, 0);
 }
 
 MFDEF void mf_dielectric_ms_table_release(mf_dielectric_ms_table *t)
@@ -457,53 +503,293 @@ MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_
     return E[i] * (MF_R(1.0) - fx) + E[i + 1] * fx;
 }
 
-/* importance-form lobe value (1 - E(wo)) (1 - E(wi)) share / (pi (1 - E_avg of wi's side)) */
-static inline mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+/* The dielectric compensation lobe from its parts, shared by the table and
+ * the built-in path: the averages E1_avg, E2_avg, the shares x, y and eta
+ * (mf_dielectric_ms_table's fields). */
+typedef struct mf__diel_ms {
+    mf_real eta, E1_avg, E2_avg, x, y;
+} mf__diel_ms;
+
+/* the shares from the averages: x = 1 - F_avg(eta), y by reciprocity
+ * (x clamped to keep y <= 1) */
+static inline void mf__diel_ms_shares(mf__diel_ms *p, mf_real f_avg)
+{
+    mf_real x = MF_R(1.0) - mf_clamp(f_avg, MF_R(0.0), MF_R(1.0)), y = MF_R(0.0);
+    mf_real den = p->eta * p->eta * (MF_R(1.0) - p->E2_avg);
+    if (den > MF_R(1e-9)) y = x * (MF_R(1.0) - p->E1_avg) / den;
+    if (y > MF_R(1.0)) { x /= y; y = MF_R(1.0); }
+    p->x = x;
+    p->y = y;
+}
+
+/* 1 when wo and wi are usable directions off the horizon */
+MF_INLINE int mf__diel_ms_dirs_ok(mf_vec3 wo, mf_vec3 wi)
+{
+    return wo.z != MF_R(0.0) && wi.z != MF_R(0.0) && wo.z == wo.z && wi.z == wi.z;
+}
+
+/* the radiance-form lobe (importance form when mode says so) for the albedos
+ * eo of wo and ei of wi on their sides: share (1 - eo) (1 - ei) /
+ * (pi (1 - E_avg of wi's side)), transmission divided by e^2 in radiance */
+static inline mf_real mf__diel_ms_eval(const mf__diel_ms *p, mf_vec3 wo, mf_vec3 wi, mf_real eo, mf_real ei, mf_transport mode)
 {
     int below_o = wo.z < MF_R(0.0), below_i = wi.z < MF_R(0.0);
-    mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);
-    mf_real ea = below_i ? t->E2_avg : t->E1_avg, den = MF_PI * (MF_R(1.0) - ea);
+    mf_real share = below_o ? (below_i ? MF_R(1.0) - p->y : p->y) : (below_i ? p->x : MF_R(1.0) - p->x);
+    mf_real ea = below_i ? p->E2_avg : p->E1_avg, den = MF_PI * (MF_R(1.0) - ea), f, e;
     if (!(den > MF_R(1e-6))) return MF_R(0.0);
-    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wi)) / den,
-                    MF_R(0.0), MF_BIG);
+    f = mf_clamp(share * (MF_R(1.0) - eo) * (MF_R(1.0) - ei) / den, MF_R(0.0), MF_BIG);
+    if (below_o == below_i || mode == MF_IMPORTANCE) return f;
+    e = below_o ? MF_R(1.0) / p->eta : p->eta;   /* eta_i / eta_o */
+    return f / (e * e);
+}
+
+/* density: the side's share times cosine */
+static inline mf_real mf__diel_ms_density(const mf__diel_ms *p, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_real share = wo.z < MF_R(0.0) ? p->y : p->x;
+    if (wo.z * wi.z < MF_R(0.0)) return share * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+    return (MF_R(1.0) - share) * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+}
+
+/* the sampled direction: cosine on the side u3 picks (transmission with the
+ * transmitted share of wo's side); the zero vector when none */
+static inline mf_vec3 mf__diel_ms_pick(const mf__diel_ms *p, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3)
+{
+    mf_vec3 w = mf__sample_cosine(u1, u2);
+    mf_real share = wo.z < MF_R(0.0) ? p->y : p->x;
+    if (!(w.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
+    if (wo.z < MF_R(0.0)) w.z = -w.z;
+    return w;
+}
+
+/* the record for w with value f and density p */
+MF_INLINE mf_sample mf__diel_ms_record(mf_vec3 wo, mf_vec3 w, mf_real f, mf_real p)
+{
+    mf_sample s = mf__no_sample();
+    if (!(p > MF_R(0.0)) || !(w.z != MF_R(0.0))) return s;
+    s.wi = w;
+    s.pdf = p;
+    s.weight = mf_min(f * MF_FABS(w.z) / p, MF_BIG);
+    s.lobe = wo.z * w.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
+}
+
+static inline mf__diel_ms mf__diel_ms_of_table(const mf_dielectric_ms_table *t)
+{
+    mf__diel_ms p;
+    p.eta = t->eta; p.E1_avg = t->E1_avg; p.E2_avg = t->E2_avg; p.x = t->x; p.y = t->y;
+    return p;
 }
 
 MFDEF mf_real mf_dielectric_ms_table_bsdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi, mf_transport mode)
 {
-    mf_real f, e;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
-    f = mf__dielectric_ms_imp(t, wo, wi);
-    if (wo.z * wi.z > MF_R(0.0) || mode == MF_IMPORTANCE) return f;
-    e = wo.z > MF_R(0.0) ? t->eta : MF_R(1.0) / t->eta;   /* eta_i / eta_o */
-    return f / (e * e);
+    mf__diel_ms p;
+    if (!t || !t->E || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    p = mf__diel_ms_of_table(t);
+    return mf__diel_ms_eval(&p, wo, wi, mf_dielectric_ms_table_albedo(t, wo), mf_dielectric_ms_table_albedo(t, wi), mode);
 }
 
 MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_transport mode,
                                               mf_real u1, mf_real u2, mf_real u3)
 {
-    mf_sample s = mf__no_sample();
+    mf__diel_ms p;
     mf_vec3 w;
-    mf_real share, p;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return s;
-    w = mf__sample_cosine(u1, u2);
-    if (!(w.z > MF_R(0.0))) return s;
-    share = wo.z < MF_R(0.0) ? t->y : t->x;   /* transmitted share */
-    if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
-    if (wo.z < MF_R(0.0)) w.z = -w.z;
-    p = mf_dielectric_ms_table_pdf(t, wo, w);
-    if (!(p > MF_R(0.0))) return s;
-    s.wi = w;
-    s.pdf = p;
-    s.weight = mf_min(mf_dielectric_ms_table_bsdf(t, wo, w, mode) * MF_FABS(w.z) / p, MF_BIG);
-    s.lobe = wo.z * w.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
-    return s;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf__no_sample();
+    p = mf__diel_ms_of_table(t);
+    w = mf__diel_ms_pick(&p, wo, u1, u2, u3);
+    if (!(w.z != MF_R(0.0))) return mf__no_sample();
+    return mf__diel_ms_record(wo, w, mf_dielectric_ms_table_bsdf(t, wo, w, mode), mf_dielectric_ms_table_pdf(t, wo, w));
 }
 
 MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
 {
-    mf_real share;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
-    share = wo.z < MF_R(0.0) ? t->y : t->x;
-    if (wo.z * wi.z < MF_R(0.0)) return share * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
-    return (MF_R(1.0) - share) * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+    mf__diel_ms p;
+    if (!t || !t->E || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    p = mf__diel_ms_of_table(t);
+    return mf__diel_ms_density(&p, wo, wi);
+}
+
+/* ---- rough dielectrics from the built-in tables */
+#ifndef MF_NO_ENERGY_TABLES
+/* the table coordinate of s = |e - 1| / (e + 1): log(s + SOFF), nodes from
+ * e = 1.05 to 3 (near e = 1 a grazing refraction's angle below the
+ * horizon grows like sqrt(s); far from it E is nearly linear in s) */
+MF_INLINE mf_real mf__diel_scoord(mf_real s)
+{
+    return MF_LOG((mf_max(s, (mf_real)MF__DIEL_SMIN) + (mf_real)MF__DIEL_SOFF) / (mf_real)(MF__DIEL_SMIN + MF__DIEL_SOFF)) *
+           ((mf_real)(MF__DIEL_NS - 1) / (mf_real)MF__DIEL_LOGR);
+}
+
+/* E (importance) and T of wo's side for kind k (0 GGX, 1 Beckmann), relative
+ * index e (across over wo's side), |mu| in [0, 1]: the F = 1 albedo plus the
+ * trilinear dE, and T. The dE average when mu < 0 (T untouched). */
+static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real mu, mf_real *tr)
+{
+    const short *dE = mf__energy_diel_data(0), *T = mf__energy_diel_data(1);
+    const float *avg = mf__energy_diel_avg();
+    int side = e < MF_R(1.0), i, j, c, a, b;
+    mf_real s = MF_FABS(e - MF_R(1.0)) / (e + MF_R(1.0));
+    mf_real fs = mf_clamp(mf__diel_scoord(s),
+                         MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
+    mf_real fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1), fx;
+    mf_real v = MF_R(0.0), t = MF_R(0.0), w;
+    size_t base;
+    j = (int)fs; if (j > MF__DIEL_NS - 2) j = MF__DIEL_NS - 2;
+    i = (int)fr; if (i > MF__DIEL_NR - 2) i = MF__DIEL_NR - 2;
+    fs -= (mf_real)j;
+    fr -= (mf_real)i;
+    if (mu < MF_R(0.0)) {
+        for (a = 0; a < 2; ++a)
+            for (b = 0; b < 2; ++b) {
+                w = (a ? fs : MF_R(1.0) - fs) * (b ? fr : MF_R(1.0) - fr);
+                v += w * (mf_real)avg[((k * 2 + side) * MF__DIEL_NS + j + a) * MF__DIEL_NR + i + b];
+            }
+        return v;
+    }
+    fx = mf__energy_segment(mu, MF__DIEL_NX, &c);
+    for (a = 0; a < 2; ++a)
+        for (b = 0; b < 2; ++b) {
+            w = (a ? fs : MF_R(1.0) - fs) * (b ? fr : MF_R(1.0) - fr);
+            base = ((size_t)((k * 2 + side) * MF__DIEL_NS + j + a) * MF__DIEL_NR + (size_t)(i + b)) * MF__DIEL_NX + (size_t)c;
+            v += w * ((MF_R(1.0) - fx) * (mf_real)dE[base] + fx * (mf_real)dE[base + 1]);
+            t += w * ((MF_R(1.0) - fx) * (mf_real)T[base] + fx * (mf_real)T[base + 1]);
+        }
+    v = mf_clamp(mf__energy_lookup(k, alpha, mu) + v * MF_R(1e-4), MF_R(0.0), MF_R(1.0));
+    if (tr) *tr = mf_clamp(t * MF_R(1e-4), MF_R(0.0), v);
+    return v;
+}
+
+/* F_avg(eta) for the material's eta, linear in s on eta's side */
+static inline mf_real mf__diel_favg(mf_real eta)
+{
+    const float *fa = mf__energy_diel_avg() + 2 * 2 * MF__DIEL_NS * MF__DIEL_NR;
+    int side = eta < MF_R(1.0), j;
+    mf_real fs = mf_clamp(mf__diel_scoord(MF_FABS(eta - MF_R(1.0)) / (eta + MF_R(1.0))),
+                          MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
+    j = (int)fs; if (j > MF__DIEL_NS - 2) j = MF__DIEL_NS - 2;
+    fs -= (mf_real)j;
+    return (mf_real)fa[side * MF__DIEL_NS + j] * (MF_R(1.0) - fs) + (mf_real)fa[side * MF__DIEL_NS + j + 1] * fs;
+}
+#endif
+
+/* the built-in table of d for the dielectric path, -1 when none */
+MF_INLINE int mf__diel_kind(const mf_ndf *d)
+{
+#ifdef MF_NO_ENERGY_TABLES
+    (void)d;
+    return -1;
+#else
+    return mf__energy_kind(d);
+#endif
+}
+
+/* E of wo's side (importance) and its transmitted part *tr (when not NULL)
+ * for the material's eta: table or quadrature */
+static inline mf_real mf__diel_albedo(const mf_ndf *d, int k, mf_vec3 wo, mf_real eta, mf_real *tr)
+{
+    mf_real mu = mf__energy_mu(wo), e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;
+    mf__ndf_prep pr;
+    if (tr) *tr = MF_R(0.0);
+    if (!(mu > MF_R(0.0))) return MF_R(0.0);
+#ifndef MF_NO_ENERGY_TABLES
+    if (k >= 0) return mf__diel_lookup(k, MF_SQRT(d->ax * d->ay), e, mu, tr);
+#else
+    (void)k;
+#endif
+    d = mf__ndf_prepare(d, &pr);
+    wo = mf_scale(wo, (wo.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(wo.z));   /* unit, above */
+    return mf__albedo_quad(d, wo, e, mf_lambda(d, wo), 1, tr);
+}
+
+/* the hemispherical average of E of the side of relative index e */
+static inline mf_real mf__diel_average(const mf_ndf *d, int k, mf_real e)
+{
+    int i, j, n_phi;
+    double row[17], sum = 0.0;
+#ifndef MF_NO_ENERGY_TABLES
+    if (k >= 0) {
+        mf_real a = MF_SQRT(d->ax * d->ay);
+        return mf_clamp(mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0), 0) * MF_R(1e-4), MF_R(0.0), MF_R(1.0));
+    }
+#else
+    (void)k;
+#endif
+    n_phi = (!d->transformed && d->ax == d->ay && mf__ndf_axes(d->type)) ? 1 : 8;
+    for (j = 0; j < n_phi; ++j) {
+        mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
+        for (i = 0; i < 17; ++i)
+            row[i] = (double)mf__diel_albedo(d, -1, mf__energy_node_dir(i, 17, phi), e, 0);
+        sum += mf__energy_avg_1d(row, 17);
+    }
+    return (mf_real)(sum / (double)n_phi);
+}
+
+/* the lobe's parts for d and the material's eta */
+static inline mf__diel_ms mf__diel_ms_of(const mf_ndf *d, int k, mf_real eta)
+{
+    mf__diel_ms p;
+    mf_real f_avg;
+    p.eta = eta;
+    p.E1_avg = mf__diel_average(d, k, eta);
+    p.E2_avg = mf__diel_average(d, k, MF_R(1.0) / eta);
+#ifndef MF_NO_ENERGY_TABLES
+    f_avg = k >= 0 ? mf__diel_favg(eta) : mf_fresnel_dielectric_average(eta);
+#else
+    f_avg = mf_fresnel_dielectric_average(eta);
+#endif
+    mf__diel_ms_shares(&p, f_avg);
+    return p;
+}
+
+MF_INLINE int mf__diel_input_ok(const mf_ndf *d, mf_real eta)
+{
+    return d && mf__ndf_known(d->type) && eta > MF_R(1e-3) && eta < MF_R(1e3);
+}
+
+MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode)
+{
+    mf_real E, T, e;
+    int k;
+    if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return MF_R(0.0);
+    k = mf__diel_kind(d);
+    E = mf__diel_albedo(d, k, wo, eta, mode == MF_IMPORTANCE ? 0 : &T);
+    if (mode == MF_IMPORTANCE) return E;
+    e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;   /* eta_i / eta_o of the transmitted part */
+    return E - T + T / (e * e);
+}
+
+MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
+{
+    mf__diel_ms p;
+    int k;
+    if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    k = mf__diel_kind(d);
+    p = mf__diel_ms_of(d, k, eta);
+    return mf__diel_ms_eval(&p, wo, wi, mf__diel_albedo(d, k, wo, eta, 0), mf__diel_albedo(d, k, wi, eta, 0), mode);
+}
+
+MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    mf__diel_ms p;
+    int k;
+    if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    k = mf__diel_kind(d);
+    p = mf__diel_ms_of(d, k, eta);
+    return mf__diel_ms_density(&p, wo, wi);
+}
+
+MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
+                                        mf_real u1, mf_real u2, mf_real u3)
+{
+    mf__diel_ms p;
+    mf_vec3 w;
+    int k;
+    if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf__no_sample();
+    k = mf__diel_kind(d);
+    p = mf__diel_ms_of(d, k, eta);
+    w = mf__diel_ms_pick(&p, wo, u1, u2, u3);
+    if (!(w.z != MF_R(0.0))) return mf__no_sample();
+    return mf__diel_ms_record(wo, w, mf__diel_ms_eval(&p, wo, w, mf__diel_albedo(d, k, wo, eta, 0), mf__diel_albedo(d, k, w, eta, 0), mode),
+                              mf__diel_ms_density(&p, wo, w));
 }
