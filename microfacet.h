@@ -18217,7 +18217,7 @@ static inline mf_real mf__diel_average(const mf_ndf *d, int k, mf_real e)
 #ifndef MF_NO_ENERGY_TABLES
     if (k >= 0) {
         mf_real a = MF_SQRT(d->ax * d->ay);
-        return mf_clamp(mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0), 0) * MF_R(1e-4), MF_R(0.0), MF_R(1.0));
+        return mf_clamp(mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0), 0), MF_R(0.0), MF_R(1.0));
     }
 #else
     (void)k;
