@@ -655,8 +655,9 @@ static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real m
             v += w * ((MF_R(1.0) - fx) * (mf_real)dE[base] + fx * (mf_real)dE[base + 1]);
             t += w * ((MF_R(1.0) - fx) * (mf_real)T[base] + fx * (mf_real)T[base + 1]);
         }
-    v = mf_clamp(mf__energy_lookup(k, alpha, mu) + v * MF_R(1e-4), MF_R(0.0), MF_R(1.0));
-    if (tr) *tr = mf_clamp(t * MF_R(1e-4), MF_R(0.0), v);
+    /* not clamped: the lobe's averages are those of this interpolant */
+    v = mf__energy_lookup(k, alpha, mu) + v * MF_R(1e-4);
+    if (tr) *tr = mf_clamp(t * MF_R(1e-4), MF_R(0.0), mf_clamp(v, MF_R(0.0), MF_R(1.0)));
     return v;
 }
 
@@ -710,7 +711,7 @@ static inline mf_real mf__diel_average(const mf_ndf *d, int k, mf_real e)
 #ifndef MF_NO_ENERGY_TABLES
     if (k >= 0) {
         mf_real a = MF_SQRT(d->ax * d->ay);
-        return mf_clamp(mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0), 0), MF_R(0.0), MF_R(1.0));
+        return mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0), 0);
     }
 #else
     (void)k;
@@ -753,7 +754,7 @@ MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_
     int k;
     if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return MF_R(0.0);
     k = mf__diel_kind(d);
-    E = mf__diel_albedo(d, k, wo, eta, mode == MF_IMPORTANCE ? 0 : &T);
+    E = mf_clamp(mf__diel_albedo(d, k, wo, eta, mode == MF_IMPORTANCE ? 0 : &T), MF_R(0.0), MF_R(1.0));
     if (mode == MF_IMPORTANCE) return E;
     e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;   /* eta_i / eta_o of the transmitted part */
     return E - T + T / (e * e);
