@@ -139,27 +139,36 @@ MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec
  * the sphere of mf_dielectric_bsdf(d, wo, wi, eta, mode) |wi.z| dwi for wo on
  * either side (single scattering, reflection plus transmission). In
  * importance transport it is at most 1 (1 minus the energy single
- * scattering loses); in radiance transport the transmitted part carries
+ * scattering loses); in radiance transport the transmitted part T carries
  * (eta_o / eta_i)^2, so from the side of the higher index it reaches up to
- * eta^2 (or 1 / eta^2), from the other side it is below the importance one.
+ * eta^2 (or 1 / eta^2), from the other side it is below the importance one
+ * (T by quadrature, 1024 visible normals: about 100 times the cost of the
+ * importance albedo).
  * mf_dielectric_bsdf_ms is the compensation lobe of mf_dielectric_ms_table
  * (Kulla & Conty 2017, section 2.2, the shares and lobes above), with E1, E2,
  * their averages and F_avg read from built-in tables for isotropic GGX and
- * Beckmann (17_energy_table_dielectric.h, `make energy-table`): relative
- * index e (index across over index of wo's side) as s = |e - 1| / (e + 1)
- * (e and 1 / e share s, two sides e >= 1 and e < 1; 8 nodes to e = 3, beyond
- * reads e = 3), 16 rows sqrt(alpha) in [0, 1] (alpha > 1 reads 1), 24
- * columns sqrt(mu); the stored value is E minus the F = 1 albedo of
- * mf_albedo, whose 64 x 64 table carries the grazing dip at mu ~ alpha, so
- * the coarse dielectric grid only holds the smooth remainder; trilinear.
- * The averages are exact for the interpolant, so the compensated BSDF
- * conserves to the table's accuracy (white furnace: docs/ACCURACY.md).
- * Anisotropic GGX / Beckmann read alpha = sqrt(ax ay). Every other mf_ndf,
- * and every kind under MF_NO_ENERGY_TABLES, integrates on each call
+ * Beckmann (17_energy_table_dielectric.h, `make energy-table`). Axes: the
+ * relative index e (index across over index of wo's side) as s = |e - 1| /
+ * (e + 1), e and 1 / e sharing s, one table per side (e >= 1, e < 1), 14
+ * nodes equally spaced in log(s + 0.015) from e = 1.05 to 3 (log near e = 1,
+ * where a grazing refraction's angle below the horizon grows like sqrt(s);
+ * nearly linear in s beyond; e outside reads the end nodes); 16 rows
+ * sqrt(alpha) in [0, 1] (alpha > 1 reads 1); 28 columns
+ * (mu^(1/4) + 1 - sqrt(1 - mu)) / 2 (dense at grazing, linear in the angle
+ * at normal incidence, where total internal reflection moves fast). The
+ * stored value is E minus the F = 1 albedo of mf_albedo, whose 64 x 64
+ * table carries the grazing dip at mu ~ alpha, so the coarse grid holds a
+ * smoother remainder; trilinear, 1e-4 steps. The stored averages are exact
+ * for the interpolant; the lobe adds a floor of 5e-4 to each loss 1 - E (the
+ * interpolant can exceed 1 slightly where E ~ 1) to stay positive and
+ * reciprocal, so it puts back up to 5e-4 too much. Accuracy (white furnace,
+ * the table against quadrature): docs/ACCURACY.md. Anisotropic GGX /
+ * Beckmann read alpha = sqrt(ax ay). Every other mf_ndf, and every kind
+ * under MF_NO_ENERGY_TABLES, integrates on each call
  * (mf_dielectric_albedo_integrate with one panel, 64 BSDF samples per
- * albedo, twice that in radiance transport; each average 17 such albedos
- * per side, 8 azimuths unless isotropic): exact but slow, build an
- * mf_dielectric_ms_table once instead.
+ * albedo; each average 17 such albedos per side, 8 azimuths unless
+ * isotropic, so a lobe evaluation costs about 2300 BSDF evaluations): exact
+ * but slow, build an mf_dielectric_ms_table once instead.
  * mf_dielectric_bsdf_ms_sample draws the lobe as mf_dielectric_ms_table_sample
  * (u3 picks the side, cosine on it); mf_dielectric_bsdf_ms_pdf is its density.
  * eta as mf_dielectric_bsdf; 0 and no sample on bad input. */
@@ -505,9 +514,13 @@ MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_
 
 /* The dielectric compensation lobe from its parts, shared by the table and
  * the built-in path: the averages E1_avg, E2_avg, the shares x, y and eta
- * (mf_dielectric_ms_table's fields). */
+ * (mf_dielectric_ms_table's fields), and a floor c added to every loss
+ * 1 - E (0 for a table; the built-in tables' interpolant may exceed 1 by a
+ * little where E ~ 1, and the lobe (1 - E(wo) + c) (1 - E(wi) + c) /
+ * (pi (1 - E_avg + c)) stays reciprocal, positive and normalized, putting
+ * back c too much). */
 typedef struct mf__diel_ms {
-    mf_real eta, E1_avg, E2_avg, x, y;
+    mf_real eta, E1_avg, E2_avg, x, y, c;
 } mf__diel_ms;
 
 /* the shares from the averages: x = 1 - F_avg(eta), y by reciprocity
@@ -515,8 +528,8 @@ typedef struct mf__diel_ms {
 static inline void mf__diel_ms_shares(mf__diel_ms *p, mf_real f_avg)
 {
     mf_real x = MF_R(1.0) - mf_clamp(f_avg, MF_R(0.0), MF_R(1.0)), y = MF_R(0.0);
-    mf_real den = p->eta * p->eta * (MF_R(1.0) - p->E2_avg);
-    if (den > MF_R(1e-9)) y = x * (MF_R(1.0) - p->E1_avg) / den;
+    mf_real den = p->eta * p->eta * (MF_R(1.0) - p->E2_avg + p->c);
+    if (den > MF_R(1e-9)) y = x * (MF_R(1.0) - p->E1_avg + p->c) / den;
     if (y > MF_R(1.0)) { x /= y; y = MF_R(1.0); }
     p->x = x;
     p->y = y;
@@ -535,9 +548,9 @@ static inline mf_real mf__diel_ms_eval(const mf__diel_ms *p, mf_vec3 wo, mf_vec3
 {
     int below_o = wo.z < MF_R(0.0), below_i = wi.z < MF_R(0.0);
     mf_real share = below_o ? (below_i ? MF_R(1.0) - p->y : p->y) : (below_i ? p->x : MF_R(1.0) - p->x);
-    mf_real ea = below_i ? p->E2_avg : p->E1_avg, den = MF_PI * (MF_R(1.0) - ea), f, e;
+    mf_real ea = below_i ? p->E2_avg : p->E1_avg, den = MF_PI * (MF_R(1.0) - ea + p->c), f, e;
     if (!(den > MF_R(1e-6))) return MF_R(0.0);
-    f = mf_clamp(share * (MF_R(1.0) - eo) * (MF_R(1.0) - ei) / den, MF_R(0.0), MF_BIG);
+    f = mf_clamp(share * (MF_R(1.0) - eo + p->c) * (MF_R(1.0) - ei + p->c) / den, MF_R(0.0), MF_BIG);
     if (below_o == below_i || mode == MF_IMPORTANCE) return f;
     e = below_o ? MF_R(1.0) / p->eta : p->eta;   /* eta_i / eta_o */
     return f / (e * e);
@@ -579,6 +592,7 @@ static inline mf__diel_ms mf__diel_ms_of_table(const mf_dielectric_ms_table *t)
 {
     mf__diel_ms p;
     p.eta = t->eta; p.E1_avg = t->E1_avg; p.E2_avg = t->E2_avg; p.x = t->x; p.y = t->y;
+    p.c = MF_R(0.0);
     return p;
 }
 
@@ -612,6 +626,10 @@ MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec
 
 /* ---- rough dielectrics from the built-in tables */
 #ifndef MF_NO_ENERGY_TABLES
+/* the lobe's loss floor c for the built-in tables (mf__diel_ms): above
+ * the largest excess of their interpolant over 1 */
+#define MF__DIEL_FLOOR MF_R(5e-4)
+
 /* the table coordinate of s = |e - 1| / (e + 1): log(s + SOFF), nodes from
  * e = 1.05 to 3 (near e = 1 a grazing refraction's angle below the
  * horizon grows like sqrt(s); far from it E is nearly linear in s) */
@@ -621,19 +639,19 @@ MF_INLINE mf_real mf__diel_scoord(mf_real s)
            ((mf_real)(MF__DIEL_NS - 1) / (mf_real)MF__DIEL_LOGR);
 }
 
-/* E (importance) and T of wo's side for kind k (0 GGX, 1 Beckmann), relative
- * index e (across over wo's side), |mu| in [0, 1]: the F = 1 albedo plus the
- * trilinear dE, and T. The dE average when mu < 0 (T untouched). */
-static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real mu, mf_real *tr)
+/* E (importance) of wo's side for kind k (0 GGX, 1 Beckmann), relative
+ * index e (across over wo's side), |mu| in [0, 1]: the F = 1 albedo plus
+ * the trilinear dE, not clamped (the lobe's averages are this
+ * interpolant's); the dE average when mu < 0. */
+static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real mu)
 {
-    const short *dE = mf__energy_diel_data(0), *T = mf__energy_diel_data(1);
+    const short *dE = mf__energy_diel_data();
     const float *avg = mf__energy_diel_avg();
     int side = e < MF_R(1.0), i, j, c, a, b;
     mf_real s = MF_FABS(e - MF_R(1.0)) / (e + MF_R(1.0));
-    mf_real fs = mf_clamp(mf__diel_scoord(s),
-                         MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
+    mf_real fs = mf_clamp(mf__diel_scoord(s), MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
     mf_real fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1), fx;
-    mf_real v = MF_R(0.0), t = MF_R(0.0), w;
+    mf_real v = MF_R(0.0), w;
     size_t base;
     j = (int)fs; if (j > MF__DIEL_NS - 2) j = MF__DIEL_NS - 2;
     i = (int)fr; if (i > MF__DIEL_NR - 2) i = MF__DIEL_NR - 2;
@@ -647,18 +665,19 @@ static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real m
             }
         return v;
     }
-    fx = mf__energy_segment(mu, MF__DIEL_NX, &c);
+    /* columns u = (mu^(1/4) + 1 - sqrt(1 - mu)) / 2: dense at grazing, linear
+     * in the angle at normal incidence */
+    fx = mf_clamp(MF_R(0.5) * (MF_SQRT(MF_SQRT(mf_min(mu, MF_R(1.0)))) + MF_R(1.0) - MF_SQRT(mf_max(MF_R(1.0) - mu, MF_R(0.0)))),
+                  MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NX - 1);
+    c = (int)fx; if (c > MF__DIEL_NX - 2) c = MF__DIEL_NX - 2;
+    fx -= (mf_real)c;
     for (a = 0; a < 2; ++a)
         for (b = 0; b < 2; ++b) {
             w = (a ? fs : MF_R(1.0) - fs) * (b ? fr : MF_R(1.0) - fr);
             base = ((size_t)((k * 2 + side) * MF__DIEL_NS + j + a) * MF__DIEL_NR + (size_t)(i + b)) * MF__DIEL_NX + (size_t)c;
             v += w * ((MF_R(1.0) - fx) * (mf_real)dE[base] + fx * (mf_real)dE[base + 1]);
-            t += w * ((MF_R(1.0) - fx) * (mf_real)T[base] + fx * (mf_real)T[base + 1]);
         }
-    /* not clamped: the lobe's averages are those of this interpolant */
-    v = mf__energy_lookup(k, alpha, mu) + v * MF_R(1e-4);
-    if (tr) *tr = mf_clamp(t * MF_R(1e-4), MF_R(0.0), mf_clamp(v, MF_R(0.0), MF_R(1.0)));
-    return v;
+    return mf__energy_lookup(k, alpha, mu) + v * MF_R(1e-4);
 }
 
 /* F_avg(eta) for the material's eta, linear in s on eta's side */
@@ -685,22 +704,21 @@ MF_INLINE int mf__diel_kind(const mf_ndf *d)
 #endif
 }
 
-/* E of wo's side (importance) and its transmitted part *tr (when not NULL)
- * for the material's eta: table or quadrature */
-static inline mf_real mf__diel_albedo(const mf_ndf *d, int k, mf_vec3 wo, mf_real eta, mf_real *tr)
+/* E of wo's side (importance) for the material's eta: table (unclamped)
+ * or quadrature */
+static inline mf_real mf__diel_albedo(const mf_ndf *d, int k, mf_vec3 wo, mf_real eta)
 {
     mf_real mu = mf__energy_mu(wo), e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;
     mf__ndf_prep pr;
-    if (tr) *tr = MF_R(0.0);
     if (!(mu > MF_R(0.0))) return MF_R(0.0);
 #ifndef MF_NO_ENERGY_TABLES
-    if (k >= 0) return mf__diel_lookup(k, MF_SQRT(d->ax * d->ay), e, mu, tr);
+    if (k >= 0) return mf__diel_lookup(k, MF_SQRT(d->ax * d->ay), e, mu);
 #else
     (void)k;
 #endif
     d = mf__ndf_prepare(d, &pr);
     wo = mf_scale(wo, (wo.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(wo.z));   /* unit, above */
-    return mf__albedo_quad(d, wo, e, mf_lambda(d, wo), 1, tr);
+    return mf__albedo_quad(d, wo, e, mf_lambda(d, wo), 1, 0);
 }
 
 /* the hemispherical average of E of the side of relative index e */
@@ -711,7 +729,7 @@ static inline mf_real mf__diel_average(const mf_ndf *d, int k, mf_real e)
 #ifndef MF_NO_ENERGY_TABLES
     if (k >= 0) {
         mf_real a = MF_SQRT(d->ax * d->ay);
-        return mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0), 0);
+        return mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0));
     }
 #else
     (void)k;
@@ -720,7 +738,7 @@ static inline mf_real mf__diel_average(const mf_ndf *d, int k, mf_real e)
     for (j = 0; j < n_phi; ++j) {
         mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
         for (i = 0; i < 17; ++i)
-            row[i] = (double)mf__diel_albedo(d, -1, mf__energy_node_dir(i, 17, phi), e, 0);
+            row[i] = (double)mf__diel_albedo(d, -1, mf__energy_node_dir(i, 17, phi), e);
         sum += mf__energy_avg_1d(row, 17);
     }
     return (mf_real)(sum / (double)n_phi);
@@ -732,6 +750,11 @@ static inline mf__diel_ms mf__diel_ms_of(const mf_ndf *d, int k, mf_real eta)
     mf__diel_ms p;
     mf_real f_avg;
     p.eta = eta;
+#ifndef MF_NO_ENERGY_TABLES
+    p.c = k >= 0 ? MF__DIEL_FLOOR : MF_R(0.0);
+#else
+    p.c = MF_R(0.0);
+#endif
     p.E1_avg = mf__diel_average(d, k, eta);
     p.E2_avg = mf__diel_average(d, k, MF_R(1.0) / eta);
 #ifndef MF_NO_ENERGY_TABLES
@@ -750,13 +773,20 @@ MF_INLINE int mf__diel_input_ok(const mf_ndf *d, mf_real eta)
 
 MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode)
 {
-    mf_real E, T, e;
-    int k;
+    mf_real E, T, e, mu;
+    mf__ndf_prep pr;
+    mf_vec3 w;
     if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return MF_R(0.0);
-    k = mf__diel_kind(d);
-    E = mf_clamp(mf__diel_albedo(d, k, wo, eta, mode == MF_IMPORTANCE ? 0 : &T), MF_R(0.0), MF_R(1.0));
+    E = mf_clamp(mf__diel_albedo(d, mf__diel_kind(d), wo, eta), MF_R(0.0), MF_R(1.0));
     if (mode == MF_IMPORTANCE) return E;
+    /* radiance: the transmitted part T (by quadrature, 4 panels) carries 1 / e^2 */
+    mu = mf__energy_mu(wo);
+    if (!(mu > MF_R(0.0))) return MF_R(0.0);
     e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;   /* eta_i / eta_o of the transmitted part */
+    w = mf_scale(wo, (wo.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(wo.z));
+    d = mf__ndf_prepare(d, &pr);
+    (void)mf__albedo_quad(d, w, e, mf_lambda(d, w), 4, &T);
+    T = mf_min(T, E);
     return E - T + T / (e * e);
 }
 
@@ -767,7 +797,7 @@ MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_
     if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
     k = mf__diel_kind(d);
     p = mf__diel_ms_of(d, k, eta);
-    return mf__diel_ms_eval(&p, wo, wi, mf__diel_albedo(d, k, wo, eta, 0), mf__diel_albedo(d, k, wi, eta, 0), mode);
+    return mf__diel_ms_eval(&p, wo, wi, mf__diel_albedo(d, k, wo, eta), mf__diel_albedo(d, k, wi, eta), mode);
 }
 
 MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
@@ -791,6 +821,6 @@ MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_rea
     p = mf__diel_ms_of(d, k, eta);
     w = mf__diel_ms_pick(&p, wo, u1, u2, u3);
     if (!(w.z != MF_R(0.0))) return mf__no_sample();
-    return mf__diel_ms_record(wo, w, mf__diel_ms_eval(&p, wo, w, mf__diel_albedo(d, k, wo, eta, 0), mf__diel_albedo(d, k, w, eta, 0), mode),
+    return mf__diel_ms_record(wo, w, mf__diel_ms_eval(&p, wo, w, mf__diel_albedo(d, k, wo, eta), mf__diel_albedo(d, k, w, eta), mode),
                               mf__diel_ms_density(&p, wo, w));
 }
