@@ -179,8 +179,8 @@
  *   MFDEF                   storage of non-inline functions (default extern)
  *   MF_MALLOC(n) / MF_FREE(p)  allocator pair (default malloc/free); define
  *                           both or neither (one alone is an #error)
- *   MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM, MF_NO_MICROSURFACE
- *                           leave out a module (see section 1)
+ *   MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM, MF_NO_MICROSURFACE,
+ *   MF_NO_ENERGY_TABLES     leave out a module (see section 1)
  *   MF_SQRT, MF_EXP, ...    every math call goes through a macro of this form;
  *                           define one to replace it (e.g. with an intrinsic)
  *
@@ -500,7 +500,10 @@ typedef float mf_real;
  *   MF_NO_LTC_TABLE    the built-in LTC tables (GGX, Beckmann, volumetric
  *                      sheen) and their accessors
  *   MF_NO_IBM          the Inverse Bin Map
- *   MF_NO_MICROSURFACE microsurface generation and the gonioreflectometer */
+ *   MF_NO_MICROSURFACE microsurface generation and the gonioreflectometer
+ *   MF_NO_ENERGY_TABLES the built-in rough-dielectric albedo tables
+ *                      (mf_dielectric_albedo and mf_dielectric_bsdf_ms then
+ *                      integrate for every kind) */
 
 /* Precision-tagged symbols: every non-inline function is emitted as
  * <name>_f32 (float) or <name>_f64 (MF_USE_DOUBLE), so a program may hold

@@ -18,7 +18,7 @@
 #     compiler: two draws passed as arguments once differed between gcc and clang).
 CC=$1; CXX=$2; WARN=$3; B=$4
 fail() { echo "config check: $*"; exit 1; }
-for opt in "" -DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE \
+for opt in "" -DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE -DMF_NO_ENERGY_TABLES \
            "-DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE"; do
   for prec in "" -DMF_USE_DOUBLE; do
     $CC -std=c99 $WARN -Werror $opt $prec -I. tests/optout_check.c -o $B/optout -lm || fail "opt-out '$opt $prec' (C)"
