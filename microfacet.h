@@ -5189,7 +5189,7 @@ MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec
 MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode);
 MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode);
 MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
-                                        mf_real u1, mf_real u2, mf_real u3);
+                                             mf_real u1, mf_real u2, mf_real u3);
 MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta);
 
 /* ======================================================================== */
@@ -18064,11 +18064,12 @@ MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec
 }
 
 /* ---- rough dielectrics from the built-in tables */
-#ifndef MF_NO_ENERGY_TABLES
-/* the lobe's loss floor c for the built-in tables (mf__diel_ms): above
- * the largest excess of their interpolant over 1 */
+/* the lobe's loss floor c for the built-in tables (mf__diel_ms): keeps the
+ * lobe positive where their interpolant exceeds 1 (by up to 2e-3, at small
+ * alpha; a floor that large would bias the furnace by as much) */
 #define MF__DIEL_FLOOR MF_R(5e-4)
 
+#ifndef MF_NO_ENERGY_TABLES
 /* the table coordinate of s = |e - 1| / (e + 1): log(s + SOFF), nodes from
  * e = 1.05 to 3 (near e = 1 a grazing refraction's angle below the
  * horizon grows like sqrt(s); far from it E is nearly linear in s) */
@@ -18078,31 +18079,45 @@ MF_INLINE mf_real mf__diel_scoord(mf_real s)
            ((mf_real)(MF__DIEL_NS - 1) / (mf_real)MF__DIEL_LOGR);
 }
 
-/* E (importance) of wo's side for kind k (0 GGX, 1 Beckmann), relative
- * index e (across over wo's side), |mu| in [0, 1]: the F = 1 albedo plus
- * the trilinear dE, not clamped (the lobe's averages are this
- * interpolant's); the dE average when mu < 0. */
-static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real mu)
+/* A place in the tables: kind k (0 GGX, 1 Beckmann), alpha, and the cell
+ * and weights of (s, sqrt(alpha)), shared by both sides (e and 1 / e have
+ * the same s). */
+typedef struct mf__diel_at {
+    int k, j, i;
+    mf_real alpha, fs, fr;
+} mf__diel_at;
+static inline mf__diel_at mf__diel_locate(int k, mf_real alpha, mf_real eta)
+{
+    mf__diel_at p;
+    mf_real s = MF_FABS(eta - MF_R(1.0)) / (eta + MF_R(1.0));
+    p.k = k;
+    p.alpha = alpha;
+    p.fs = mf_clamp(mf__diel_scoord(s), MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
+    p.fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1);
+    p.j = (int)p.fs; if (p.j > MF__DIEL_NS - 2) p.j = MF__DIEL_NS - 2;
+    p.i = (int)p.fr; if (p.i > MF__DIEL_NR - 2) p.i = MF__DIEL_NR - 2;
+    p.fs -= (mf_real)p.j;
+    p.fr -= (mf_real)p.i;
+    return p;
+}
+
+/* E (importance) of the side (0: relative index e >= 1, 1: e < 1) at |mu|
+ * in [0, 1]: the F = 1 albedo plus the trilinear dE, not clamped (the
+ * lobe's averages are this interpolant's); E_avg when mu < 0. */
+static inline mf_real mf__diel_E(const mf__diel_at *p, int side, mf_real mu)
 {
     const short *dE = mf__energy_diel_data();
     const float *avg = mf__energy_diel_avg();
-    int side = e < MF_R(1.0), i, j, c, a, b;
-    mf_real s = MF_FABS(e - MF_R(1.0)) / (e + MF_R(1.0));
-    mf_real fs = mf_clamp(mf__diel_scoord(s), MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
-    mf_real fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1), fx;
-    mf_real v = MF_R(0.0), w;
+    int c, a, b;
+    mf_real v = MF_R(0.0), w, fx;
     size_t base;
-    j = (int)fs; if (j > MF__DIEL_NS - 2) j = MF__DIEL_NS - 2;
-    i = (int)fr; if (i > MF__DIEL_NR - 2) i = MF__DIEL_NR - 2;
-    fs -= (mf_real)j;
-    fr -= (mf_real)i;
     if (mu < MF_R(0.0)) {
         for (a = 0; a < 2; ++a)
             for (b = 0; b < 2; ++b) {
-                w = (a ? fs : MF_R(1.0) - fs) * (b ? fr : MF_R(1.0) - fr);
-                v += w * (mf_real)avg[((k * 2 + side) * MF__DIEL_NS + j + a) * MF__DIEL_NR + i + b];
+                w = (a ? p->fs : MF_R(1.0) - p->fs) * (b ? p->fr : MF_R(1.0) - p->fr);
+                v += w * (mf_real)avg[((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + p->i + b];
             }
-        return v;
+        return mf__energy_lookup(p->k, p->alpha, MF_R(-1.0)) + v;
     }
     /* columns u = (mu^(1/4) + 1 - sqrt(1 - mu)) / 2: dense at grazing, linear
      * in the angle at normal incidence */
@@ -18112,23 +18127,18 @@ static inline mf_real mf__diel_lookup(int k, mf_real alpha, mf_real e, mf_real m
     fx -= (mf_real)c;
     for (a = 0; a < 2; ++a)
         for (b = 0; b < 2; ++b) {
-            w = (a ? fs : MF_R(1.0) - fs) * (b ? fr : MF_R(1.0) - fr);
-            base = ((size_t)((k * 2 + side) * MF__DIEL_NS + j + a) * MF__DIEL_NR + (size_t)(i + b)) * MF__DIEL_NX + (size_t)c;
+            w = (a ? p->fs : MF_R(1.0) - p->fs) * (b ? p->fr : MF_R(1.0) - p->fr);
+            base = ((size_t)((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + (size_t)(p->i + b)) * MF__DIEL_NX + (size_t)c;
             v += w * ((MF_R(1.0) - fx) * (mf_real)dE[base] + fx * (mf_real)dE[base + 1]);
         }
-    return mf__energy_lookup(k, alpha, mu) + v * MF_R(1e-4);
+    return mf__energy_lookup(p->k, p->alpha, mu) + v * MF_R(1e-4);
 }
 
-/* F_avg(eta) for the material's eta, linear in s on eta's side */
-static inline mf_real mf__diel_favg(mf_real eta)
+/* F_avg of the material's eta (side 0: eta >= 1), linear in the s cell */
+static inline mf_real mf__diel_favg(const mf__diel_at *p, int side)
 {
-    const float *fa = mf__energy_diel_avg() + 2 * 2 * MF__DIEL_NS * MF__DIEL_NR;
-    int side = eta < MF_R(1.0), j;
-    mf_real fs = mf_clamp(mf__diel_scoord(MF_FABS(eta - MF_R(1.0)) / (eta + MF_R(1.0))),
-                          MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
-    j = (int)fs; if (j > MF__DIEL_NS - 2) j = MF__DIEL_NS - 2;
-    fs -= (mf_real)j;
-    return (mf_real)fa[side * MF__DIEL_NS + j] * (MF_R(1.0) - fs) + (mf_real)fa[side * MF__DIEL_NS + j + 1] * fs;
+    const float *fa = mf__energy_diel_avg() + 2 * 2 * MF__DIEL_NS * MF__DIEL_NR + side * MF__DIEL_NS;
+    return (mf_real)fa[p->j] * (MF_R(1.0) - p->fs) + (mf_real)fa[p->j + 1] * p->fs;
 }
 #endif
 
@@ -18143,63 +18153,75 @@ MF_INLINE int mf__diel_kind(const mf_ndf *d)
 #endif
 }
 
-/* E of wo's side (importance) for the material's eta: table (unclamped)
- * or quadrature */
-static inline mf_real mf__diel_albedo(const mf_ndf *d, int k, mf_vec3 wo, mf_real eta)
-{
-    mf_real mu = mf__energy_mu(wo), e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;
+/* The built-in path's state for d and the material's eta: the table place
+ * (k >= 0) or d prepared for quadrature (k < 0). */
+typedef struct mf__diel_src {
+    const mf_ndf *d;
+    mf_real eta;
+    int k;
     mf__ndf_prep pr;
-    if (!(mu > MF_R(0.0))) return MF_R(0.0);
 #ifndef MF_NO_ENERGY_TABLES
-    if (k >= 0) return mf__diel_lookup(k, MF_SQRT(d->ax * d->ay), e, mu);
-#else
-    (void)k;
+    mf__diel_at at;
 #endif
-    d = mf__ndf_prepare(d, &pr);
-    wo = mf_scale(wo, (wo.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(wo.z));   /* unit, above */
-    return mf__albedo_quad(d, wo, e, mf_lambda(d, wo), 1, 0);
+} mf__diel_src;
+static inline void mf__diel_src_init(mf__diel_src *q, const mf_ndf *d, mf_real eta)
+{
+    q->eta = eta;
+    q->k = mf__diel_kind(d);
+#ifndef MF_NO_ENERGY_TABLES
+    if (q->k >= 0) { q->d = d; q->at = mf__diel_locate(q->k, MF_SQRT(d->ax * d->ay), eta); return; }
+#endif
+    q->d = mf__ndf_prepare(d, &q->pr);
 }
 
-/* the hemispherical average of E of the side of relative index e */
-static inline mf_real mf__diel_average(const mf_ndf *d, int k, mf_real e)
+/* E of w's side (importance): table (unclamped) or quadrature (one panel) */
+static inline mf_real mf__diel_albedo(const mf__diel_src *q, mf_vec3 w)
+{
+    mf_real mu = mf__energy_mu(w), e = w.z < MF_R(0.0) ? MF_R(1.0) / q->eta : q->eta;
+    if (!(mu > MF_R(0.0))) return MF_R(0.0);
+#ifndef MF_NO_ENERGY_TABLES
+    if (q->k >= 0) return mf__diel_E(&q->at, e < MF_R(1.0), mu);
+#endif
+    w = mf_scale(w, (w.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(w.z));   /* unit, above */
+    return mf__albedo_quad(q->d, w, e, mf_lambda(q->d, w), 1, 0);
+}
+
+/* the hemispherical average of E of the side seen from below (below = 1)
+ * or above */
+static inline mf_real mf__diel_average(const mf__diel_src *q, int below)
 {
     int i, j, n_phi;
     double row[17], sum = 0.0;
+    const mf_ndf *d = q->d;
 #ifndef MF_NO_ENERGY_TABLES
-    if (k >= 0) {
-        mf_real a = MF_SQRT(d->ax * d->ay);
-        return mf__energy_lookup(k, a, MF_R(-1.0)) + mf__diel_lookup(k, a, e, MF_R(-1.0));
-    }
-#else
-    (void)k;
+    if (q->k >= 0) return mf__diel_E(&q->at, (below ? MF_R(1.0) / q->eta : q->eta) < MF_R(1.0), MF_R(-1.0));
 #endif
     n_phi = (!d->transformed && d->ax == d->ay && mf__ndf_axes(d->type)) ? 1 : 8;
     for (j = 0; j < n_phi; ++j) {
         mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
-        for (i = 0; i < 17; ++i)
-            row[i] = (double)mf__diel_albedo(d, -1, mf__energy_node_dir(i, 17, phi), e);
+        for (i = 0; i < 17; ++i) {
+            mf_vec3 w = mf__energy_node_dir(i, 17, phi);
+            if (below) w.z = -w.z;
+            row[i] = (double)mf__diel_albedo(q, w);
+        }
         sum += mf__energy_avg_1d(row, 17);
     }
     return (mf_real)(sum / (double)n_phi);
 }
 
-/* the lobe's parts for d and the material's eta */
-static inline mf__diel_ms mf__diel_ms_of(const mf_ndf *d, int k, mf_real eta)
+/* the lobe's parts */
+static inline mf__diel_ms mf__diel_ms_of(const mf__diel_src *q)
 {
     mf__diel_ms p;
     mf_real f_avg;
-    p.eta = eta;
+    p.eta = q->eta;
+    p.c = q->k >= 0 ? MF__DIEL_FLOOR : MF_R(0.0);
+    p.E1_avg = mf__diel_average(q, 0);
+    p.E2_avg = mf__diel_average(q, 1);
 #ifndef MF_NO_ENERGY_TABLES
-    p.c = k >= 0 ? MF__DIEL_FLOOR : MF_R(0.0);
+    f_avg = q->k >= 0 ? mf__diel_favg(&q->at, q->eta < MF_R(1.0)) : mf_fresnel_dielectric_average(q->eta);
 #else
-    p.c = MF_R(0.0);
-#endif
-    p.E1_avg = mf__diel_average(d, k, eta);
-    p.E2_avg = mf__diel_average(d, k, MF_R(1.0) / eta);
-#ifndef MF_NO_ENERGY_TABLES
-    f_avg = k >= 0 ? mf__diel_favg(eta) : mf_fresnel_dielectric_average(eta);
-#else
-    f_avg = mf_fresnel_dielectric_average(eta);
+    f_avg = mf_fresnel_dielectric_average(q->eta);
 #endif
     mf__diel_ms_shares(&p, f_avg);
     return p;
@@ -18212,11 +18234,13 @@ MF_INLINE int mf__diel_input_ok(const mf_ndf *d, mf_real eta)
 
 MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode)
 {
+    mf__diel_src q;
     mf_real E, T, e, mu;
     mf__ndf_prep pr;
     mf_vec3 w;
     if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return MF_R(0.0);
-    E = mf_clamp(mf__diel_albedo(d, mf__diel_kind(d), wo, eta), MF_R(0.0), MF_R(1.0));
+    mf__diel_src_init(&q, d, eta);
+    E = mf_clamp(mf__diel_albedo(&q, wo), MF_R(0.0), MF_R(1.0));
     if (mode == MF_IMPORTANCE) return E;
     /* radiance: the transmitted part T (by quadrature, 4 panels) carries 1 / e^2 */
     mu = mf__energy_mu(wo);
@@ -18231,36 +18255,36 @@ MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_
 
 MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
 {
+    mf__diel_src q;
     mf__diel_ms p;
-    int k;
     if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
-    k = mf__diel_kind(d);
-    p = mf__diel_ms_of(d, k, eta);
-    return mf__diel_ms_eval(&p, wo, wi, mf__diel_albedo(d, k, wo, eta), mf__diel_albedo(d, k, wi, eta), mode);
+    mf__diel_src_init(&q, d, eta);
+    p = mf__diel_ms_of(&q);
+    return mf__diel_ms_eval(&p, wo, wi, mf__diel_albedo(&q, wo), mf__diel_albedo(&q, wi), mode);
 }
 
 MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
 {
+    mf__diel_src q;
     mf__diel_ms p;
-    int k;
     if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
-    k = mf__diel_kind(d);
-    p = mf__diel_ms_of(d, k, eta);
+    mf__diel_src_init(&q, d, eta);
+    p = mf__diel_ms_of(&q);
     return mf__diel_ms_density(&p, wo, wi);
 }
 
 MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
-                                        mf_real u1, mf_real u2, mf_real u3)
+                                             mf_real u1, mf_real u2, mf_real u3)
 {
+    mf__diel_src q;
     mf__diel_ms p;
     mf_vec3 w;
-    int k;
     if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf__no_sample();
-    k = mf__diel_kind(d);
-    p = mf__diel_ms_of(d, k, eta);
+    mf__diel_src_init(&q, d, eta);
+    p = mf__diel_ms_of(&q);
     w = mf__diel_ms_pick(&p, wo, u1, u2, u3);
     if (!(w.z != MF_R(0.0))) return mf__no_sample();
-    return mf__diel_ms_record(wo, w, mf__diel_ms_eval(&p, wo, w, mf__diel_albedo(d, k, wo, eta), mf__diel_albedo(d, k, w, eta), mode),
+    return mf__diel_ms_record(wo, w, mf__diel_ms_eval(&p, wo, w, mf__diel_albedo(&q, wo), mf__diel_albedo(&q, w), mode),
                               mf__diel_ms_density(&p, wo, w));
 }
 #ifndef MF_NO_LTC_TABLE
