@@ -158,8 +158,9 @@ MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec
  * at normal incidence, where total internal reflection moves fast). The
  * stored value is E minus the F = 1 albedo of mf_albedo, whose 64 x 64
  * table carries the grazing dip at mu ~ alpha, so the coarse grid holds a
- * smoother remainder; trilinear, 1e-4 steps. The stored averages are exact
- * for the interpolant; the lobe adds a floor of 5e-4 to each loss 1 - E (the
+ * smoother remainder, in 1e-4 steps; linear in s and in the column,
+ * Catmull-Rom in sqrt(alpha) (weights independent of mu, so the stored
+ * averages stay exact for the interpolant); the lobe adds a floor of 5e-4 to each loss 1 - E (the
  * interpolant can exceed 1 slightly where E ~ 1) to stay positive and
  * reciprocal, so it puts back up to 5e-4 too much. Accuracy (white furnace,
  * the table against quadrature): docs/ACCURACY.md. Anisotropic GGX /
@@ -644,21 +645,33 @@ MF_INLINE mf_real mf__diel_scoord(mf_real s)
  * and weights of (s, sqrt(alpha)), shared by both sides (e and 1 / e have
  * the same s). */
 typedef struct mf__diel_at {
-    int k, j, i;
-    mf_real alpha, fs, fr;
+    int k, j, i[4];
+    mf_real alpha, fs, wr[4];
 } mf__diel_at;
 static inline mf__diel_at mf__diel_locate(int k, mf_real alpha, mf_real eta)
 {
     mf__diel_at p;
-    mf_real s = MF_FABS(eta - MF_R(1.0)) / (eta + MF_R(1.0));
+    mf_real s = MF_FABS(eta - MF_R(1.0)) / (eta + MF_R(1.0)), fr, t, t2, t3;
+    int i, b;
     p.k = k;
     p.alpha = alpha;
     p.fs = mf_clamp(mf__diel_scoord(s), MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
-    p.fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1);
+    fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1);
     p.j = (int)p.fs; if (p.j > MF__DIEL_NS - 2) p.j = MF__DIEL_NS - 2;
-    p.i = (int)p.fr; if (p.i > MF__DIEL_NR - 2) p.i = MF__DIEL_NR - 2;
+    i = (int)fr; if (i > MF__DIEL_NR - 2) i = MF__DIEL_NR - 2;
     p.fs -= (mf_real)p.j;
-    p.fr -= (mf_real)p.i;
+    t = fr - (mf_real)i;
+    /* Catmull-Rom in sqrt(alpha) (end rows repeated): the weights do not
+     * depend on mu, so the averages stay exact for the interpolant, and the
+     * onset of total internal reflection with alpha is followed better than
+     * linearly */
+    t2 = t * t;
+    t3 = t2 * t;
+    p.wr[0] = MF_R(0.5) * (-t3 + MF_R(2.0) * t2 - t);
+    p.wr[1] = MF_R(0.5) * (MF_R(3.0) * t3 - MF_R(5.0) * t2 + MF_R(2.0));
+    p.wr[2] = MF_R(0.5) * (MF_R(-3.0) * t3 + MF_R(4.0) * t2 + t);
+    p.wr[3] = MF_R(0.5) * (t3 - t2);
+    for (b = 0; b < 4; ++b) p.i[b] = i - 1 + b < 0 ? 0 : (i - 1 + b > MF__DIEL_NR - 1 ? MF__DIEL_NR - 1 : i - 1 + b);
     return p;
 }
 
@@ -674,9 +687,9 @@ static inline mf_real mf__diel_E(const mf__diel_at *p, int side, mf_real mu)
     size_t base;
     if (mu < MF_R(0.0)) {
         for (a = 0; a < 2; ++a)
-            for (b = 0; b < 2; ++b) {
-                w = (a ? p->fs : MF_R(1.0) - p->fs) * (b ? p->fr : MF_R(1.0) - p->fr);
-                v += w * (mf_real)avg[((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + p->i + b];
+            for (b = 0; b < 4; ++b) {
+                w = (a ? p->fs : MF_R(1.0) - p->fs) * p->wr[b];
+                v += w * (mf_real)avg[((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + p->i[b]];
             }
         return mf__energy_lookup(p->k, p->alpha, MF_R(-1.0)) + v;
     }
@@ -687,9 +700,9 @@ static inline mf_real mf__diel_E(const mf__diel_at *p, int side, mf_real mu)
     c = (int)fx; if (c > MF__DIEL_NX - 2) c = MF__DIEL_NX - 2;
     fx -= (mf_real)c;
     for (a = 0; a < 2; ++a)
-        for (b = 0; b < 2; ++b) {
-            w = (a ? p->fs : MF_R(1.0) - p->fs) * (b ? p->fr : MF_R(1.0) - p->fr);
-            base = ((size_t)((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + (size_t)(p->i + b)) * MF__DIEL_NX + (size_t)c;
+        for (b = 0; b < 4; ++b) {
+            w = (a ? p->fs : MF_R(1.0) - p->fs) * p->wr[b];
+            base = ((size_t)((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + (size_t)p->i[b]) * MF__DIEL_NX + (size_t)c;
             v += w * ((MF_R(1.0) - fx) * (mf_real)dE[base] + fx * (mf_real)dE[base + 1]);
         }
     return mf__energy_lookup(p->k, p->alpha, mu) + v * MF_R(1e-4);

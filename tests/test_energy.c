@@ -504,7 +504,9 @@ static void dielectric(void)
  * in `mode`, over the half vector m (reflection dwi = 4 |wo.m| dm,
  * refraction dwi = (wi.m + wo.m / e)^2 / |wi.m| dm, Walter 2007 Eqs. 14, 17),
  * polar normalized slope u / (1 - u) x azimuth in [0, pi] (wo in the xz
- * plane: the integrand is even in the azimuth), 8 x 8 panels of 8 GL nodes;
+ * plane: the integrand is even in the azimuth), 16 x 8 panels of 8 GL nodes
+ * (8 in the slope left 6e-3 at normal incidence from below: the total
+ * internal reflection edge is then a circle of m inside a panel);
  * *tr the transmitted part. Uses neither the tables nor the samplers. */
 static double ref_diel_albedo(const mf_ndf *d, mf_vec3 wo, double eta, mf_transport mode, double *tr)
 {
@@ -517,13 +519,13 @@ static double ref_diel_albedo(const mf_ndf *d, mf_vec3 wo, double eta, mf_transp
     int p, i, q, j;
     if (!init) { mft_gl(8, gx, gw); init = 1; }
     if (a > 1.0) a = 1.0;
-    for (p = 0; p < 8; ++p)
+    for (p = 0; p < 16; ++p)
         for (i = 0; i < 8; ++i) {
-            double u = ((double)p + gx[i]) / 8.0, rho = u / (1.0 - u), drho = 1.0 / ((1.0 - u) * (1.0 - u));
+            double u = ((double)p + gx[i]) / 16.0, rho = u / (1.0 - u), drho = 1.0 / ((1.0 - u) * (1.0 - u));
             double th = atan(a * rho), dth = a / (1.0 + a * a * rho * rho) * drho;
             for (q = 0; q < 8; ++q)
                 for (j = 0; j < 8; ++j) {
-                    double ph = pi * ((double)q + gx[j]) / 8.0, wt = gw[i] * gw[j] / 64.0 * 2.0 * pi * sin(th) * dth;
+                    double ph = pi * ((double)q + gx[j]) / 8.0, wt = gw[i] * gw[j] / 128.0 * 2.0 * pi * sin(th) * dth;
                     double mx = sin(th) * cos(ph), my = sin(th) * sin(ph), mz = cos(th);
                     double c = (double)w.x * mx + (double)w.y * my + (double)w.z * mz, ct2, ct, f;
                     mf_vec3 wi;
@@ -674,11 +676,11 @@ static void builtin_dielectric(void)
             }
         }
         snprintf(msg, sizeof msg, "%s built-in dielectric white furnace (importance), %d views (alpha 0.01..1, eta 1.05..3, both sides, mu 1e-3..1): "
-                 "worst |1 - albedo| %.2e (alpha %g, eta %g, mu %g, %s) <= 1.5e-2", k ? "Beckmann" : "GGX", n, worst, wa, we, wm, ws ? "below" : "above");
-        CHECKV(worst <= 1.5e-2, msg);
-        snprintf(msg, sizeof msg, "%s mf_dielectric_albedo in radiance transport vs R + T / e^2 of the reference: worst %.2e (alpha %g, eta %g, mu %g, %s) <= 0.3",
+                 "worst |1 - albedo| %.2e (alpha %g, eta %g, mu %g, %s) <= 6e-3", k ? "Beckmann" : "GGX", n, worst, wa, we, wm, ws ? "below" : "above");
+        CHECKV(worst <= 6e-3, msg);
+        snprintf(msg, sizeof msg, "%s mf_dielectric_albedo in radiance transport vs R + T / e^2 of the reference: worst %.2e (alpha %g, eta %g, mu %g, %s) <= 0.15",
                  k ? "Beckmann" : "GGX", worst_t, wta, wte, wtm, wts ? "below" : "above");
-        CHECKV(worst_t <= 0.3, msg);
+        CHECKV(worst_t <= 0.15, msg);
         snprintf(msg, sizeof msg, "%s dielectric transport modes: radiance = importance with T / e^2, lobe's transmission / e^2 (%d off)", k ? "Beckmann" : "GGX", bad_mode);
         CHECKV(bad_mode == 0, msg);
     }
