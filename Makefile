@@ -73,10 +73,15 @@ ltc-table-beckmann: | $(BUILD)
 	@$(MAKE) --no-print-directory header
 
 # the built-in directional-albedo tables (GGX, Beckmann), retabulated (about
-# 10 s); reproduces the shipped src/17_energy_table.h byte for byte
+# 10 s), then the rough-dielectric tables relative to them (about 1 minute);
+# reproduces the shipped src/17_energy_table.h and
+# src/17_energy_table_dielectric.h byte for byte
 energy-table: | $(BUILD)
 	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/energy_fit.c -o $(BUILD)/energy_fit -lm
 	./$(BUILD)/energy_fit > src/17_energy_table.h.tmp && mv src/17_energy_table.h.tmp src/17_energy_table.h
+	@$(MAKE) --no-print-directory header
+	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/energy_fit_dielectric.c -o $(BUILD)/energy_fit_dielectric -lm
+	./$(BUILD)/energy_fit_dielectric > src/17_energy_table_dielectric.h.tmp && mv src/17_energy_table_dielectric.h.tmp src/17_energy_table_dielectric.h
 	@$(MAKE) --no-print-directory header
 
 # the built-in volumetric sheen LTC table: simulates the fibre layer and

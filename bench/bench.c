@@ -611,6 +611,20 @@ static double b_plain_lookup(const mf_ndf *d) { LOOP(plain_bilinear(d->ax, g_wo[
  * same pairs as mf_dielectric_bsdf (half of them transmitted) */
 static mf_dielectric_ms_table g_dms;
 static double b_dielectric_ms(const mf_ndf *d) { (void)d; LOOP(mf_dielectric_ms_table_bsdf(&g_dms, g_wo[i], g_wt[i], MF_RADIANCE)); }
+/* the same lobe from the built-in tables (no build), its sampler, and the
+ * importance albedo lookup */
+static double b_dielectric_bsdf_ms(const mf_ndf *d) { LOOP(mf_dielectric_bsdf_ms(d, g_wo[i], g_wt[i], MF_R(1.5), MF_RADIANCE)); }
+static double b_dielectric_ms_sample(const mf_ndf *d)
+{
+    double s = 0.0;
+    int i;
+    for (i = 0; i < N; ++i) {
+        mf_sample r = mf_dielectric_bsdf_ms_sample(d, g_wo[i], MF_R(1.5), MF_RADIANCE, g_u1[i], g_u2[i], g_u1[(i + 7) % N]);
+        s += (double)r.wi.z + (double)r.weight;
+    }
+    return s;
+}
+static double b_dielectric_albedo(const mf_ndf *d) { LOOP(mf_dielectric_albedo(d, g_wo[i], MF_R(1.5), MF_IMPORTANCE)); }
 
 /* Rough dielectric, GGX only, written plainly from Walter et al. 2007 (wo
  * above, eta 1.5): the baseline of mf_dielectric_bsdf */
@@ -1273,6 +1287,13 @@ static void bench_core(const struct bench_kind *ks, int sections)
             printf("bench ggx_dielectric_bsdf_ms %.2f ratio=%.3f\n", ours, ours / base);
             mf_dielectric_ms_table_release(&g_dms);
         }
+        run_pair(b_dielectric, b_dielectric_bsdf_ms, g, &base, &ours);
+        printf("bench ggx_dielectric_bsdf_ms_builtin %.2f ratio_to_single=%.3f\n", ours, ours / base);
+        run_pair(b_dielectric_sample, b_dielectric_ms_sample, g, &base, &ours);
+        printf("bench ggx_dielectric_sample_baseline %.2f\n", base);
+        printf("bench ggx_dielectric_bsdf_ms_sample_builtin %.2f ratio=%.3f\n", ours, ours / base);
+        run_pair(b_plain_lookup, b_dielectric_albedo, g, &base, &ours);
+        printf("bench ggx_dielectric_albedo_lookup %.2f ratio_to_plain_bilinear=%.3f\n", ours, ours / base);
     }
     for (k = 0; k < 5 && (sections & 2); ++k) {   /* kinds */
         const mf_ndf *d = &ks[k].d;

@@ -165,8 +165,8 @@
  *   MFDEF                   storage of non-inline functions (default extern)
  *   MF_MALLOC(n) / MF_FREE(p)  allocator pair (default malloc/free); define
  *                           both or neither (one alone is an #error)
- *   MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM, MF_NO_MICROSURFACE
- *                           leave out a module (see section 1)
+ *   MF_NO_LEADR, MF_NO_LTC_TABLE, MF_NO_IBM, MF_NO_MICROSURFACE,
+ *   MF_NO_ENERGY_TABLES     leave out a module (see section 1)
  *   MF_SQRT, MF_EXP, ...    every math call goes through a macro of this form;
  *                           define one to replace it (e.g. with an intrinsic)
  *

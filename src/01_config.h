@@ -281,7 +281,10 @@ typedef float mf_real;
  *   MF_NO_LTC_TABLE    the built-in LTC tables (GGX, Beckmann, volumetric
  *                      sheen) and their accessors
  *   MF_NO_IBM          the Inverse Bin Map
- *   MF_NO_MICROSURFACE microsurface generation and the gonioreflectometer */
+ *   MF_NO_MICROSURFACE microsurface generation and the gonioreflectometer
+ *   MF_NO_ENERGY_TABLES the built-in rough-dielectric albedo tables
+ *                      (mf_dielectric_albedo and mf_dielectric_bsdf_ms then
+ *                      integrate for every kind) */
 
 /* Precision-tagged symbols: every non-inline function is emitted as
  * <name>_f32 (float) or <name>_f64 (MF_USE_DOUBLE), so a program may hold

@@ -114,7 +114,7 @@ MFDEF mf_real mf_albedo_table_brdf_ms(const mf_albedo_table *t, mf_vec3 wo, mf_v
  * mf_dielectric_bsdf). x is clamped to keep y <= 1. E1 and E2 are
  * tabulated at n_mu nodes mu = x^2 as mf_albedo_table, by quadrature over
  * the visible normals of the side of wo (panels as mf_albedo_integrate).
- * There are no built-in dielectric tables: build one per material. */
+ * GGX and Beckmann need no build: mf_dielectric_bsdf_ms below. */
 typedef struct mf_dielectric_ms_table {
     int n_mu;
     mf_real eta;
@@ -135,15 +135,60 @@ MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, m
                                               mf_real u1, mf_real u2, mf_real u3);
 MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi);
 
+/* Rough dielectrics without a build. mf_dielectric_albedo: the integral over
+ * the sphere of mf_dielectric_bsdf(d, wo, wi, eta, mode) |wi.z| dwi for wo on
+ * either side (single scattering, reflection plus transmission). In
+ * importance transport it is at most 1 (1 minus the energy single
+ * scattering loses); in radiance transport the transmitted part T carries
+ * (eta_o / eta_i)^2, so from the side of the higher index it reaches up to
+ * eta^2 (or 1 / eta^2), from the other side it is below the importance one
+ * (T by quadrature, 1024 visible normals: about 100 times the cost of the
+ * importance albedo).
+ * mf_dielectric_bsdf_ms is the compensation lobe of mf_dielectric_ms_table
+ * (Kulla & Conty 2017, section 2.2, the shares and lobes above), with E1, E2,
+ * their averages and F_avg read from built-in tables for isotropic GGX and
+ * Beckmann (17_energy_table_dielectric.h, `make energy-table`). Axes: the
+ * relative index e (index across over index of wo's side) as s = |e - 1| /
+ * (e + 1), e and 1 / e sharing s, one table per side (e >= 1, e < 1), 14
+ * nodes equally spaced in log(s + 0.015) from e = 1.05 to 3 (log near e = 1,
+ * where a grazing refraction's angle below the horizon grows like sqrt(s);
+ * nearly linear in s beyond; e outside reads the end nodes); 16 rows
+ * sqrt(alpha) in [0, 1] (alpha > 1 reads 1); 28 columns
+ * (mu^(1/4) + 1 - sqrt(1 - mu)) / 2 (dense at grazing, linear in the angle
+ * at normal incidence, where total internal reflection moves fast). The
+ * stored value is E minus the F = 1 albedo of mf_albedo, whose 64 x 64
+ * table carries the grazing dip at mu ~ alpha, so the coarse grid holds a
+ * smoother remainder, in 1e-4 steps; linear in s and in the column,
+ * Catmull-Rom in sqrt(alpha) (weights independent of mu, so the stored
+ * averages stay exact for the interpolant); the lobe adds a floor of 5e-4 to each loss 1 - E (the
+ * interpolant can exceed 1 slightly where E ~ 1) to stay positive and
+ * reciprocal, so it puts back up to 5e-4 too much. Accuracy (white furnace,
+ * the table against quadrature): docs/ACCURACY.md. Anisotropic GGX /
+ * Beckmann read alpha = sqrt(ax ay). Every other mf_ndf, and every kind
+ * under MF_NO_ENERGY_TABLES, integrates on each call
+ * (mf_dielectric_albedo_integrate with one panel, 64 BSDF samples per
+ * albedo; each average 17 such albedos per side, 8 azimuths unless
+ * isotropic, so a lobe evaluation costs about 2300 BSDF evaluations): exact
+ * but slow, build an mf_dielectric_ms_table once instead.
+ * mf_dielectric_bsdf_ms_sample draws the lobe as mf_dielectric_ms_table_sample
+ * (u3 picks the side, cosine on it); mf_dielectric_bsdf_ms_pdf is its density.
+ * eta as mf_dielectric_bsdf; 0 and no sample on bad input. */
+MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode);
+MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode);
+MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
+                                             mf_real u1, mf_real u2, mf_real u3);
+MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta);
+
 /* @impl */
 /* The albedo integrands at (u1, u2) of the unit square: eta = 0, f cos / pdf
  * at wi reflected about the visible normal m(u) of mf__sample_visible_smooth
  * (G2 / G1, smooth except where wi crosses the horizon); eta > 0 (wo above, lo = Lambda(wo)), the dielectric's reflected
  * and transmitted weights F (1 + lo) G2 and (1 - F) (1 + lo) G2 at the
  * visible normal m(u). 0 where there is no sample. */
-MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2)
+MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, mf_real u1, mf_real u2, mf_real *vt)
 {
     mf_real v = MF_R(0.0);
+    *vt = MF_R(0.0);
     if (!(eta > MF_R(0.0))) {
         mf_vec3 m = mf__sample_visible_smooth(d, wo, u1, u2), wi = mf_reflect(wo, m);
         mf_real pdf;
@@ -158,28 +203,39 @@ MF_INLINE mf_real mf__albedo_weight(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf
         F = mf_fresnel_dielectric(mf_dot(wo, m), eta);
         wr = mf_reflect(wo, m);
         if (wr.z > MF_R(0.0)) v += F * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wr);
-        if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0))
-            v += (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
+        if (F < MF_R(1.0) && mf_refract(wo, m, eta, &wt) && wt.z < MF_R(0.0)) {
+            *vt = (MF_R(1.0) - F) * (MF_R(1.0) + lo) * mf__dielectric_G2(d, wo, wt);
+            if (!(*vt == *vt) || !(*vt < MF_BIG)) *vt = MF_R(0.0);
+            v += *vt;
+        }
     }
-    return v == v && v < MF_BIG ? v : MF_R(0.0);
+    if (v == v && v < MF_BIG) return v;
+    *vt = MF_R(0.0);
+    return MF_R(0.0);
 }
 
 /* The albedo by (8 panels)^2 Gauss-Legendre nodes over the unit square,
- * clamped to [0, 1]. */
-MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, int panels)
+ * clamped to [0, 1]; *tr (when not NULL) its transmitted part. */
+MF_INLINE mf_real mf__albedo_quad(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_real lo, int panels, mf_real *tr)
 {
-    double sum = 0.0, h = 1.0 / (double)panels;
+    double sum = 0.0, st = 0.0, h = 1.0 / (double)panels;
     int p1, p2, i, j;
     for (p1 = 0; p1 < panels; ++p1)
         for (i = 0; i < 8; ++i) {
             mf_real u1 = mf__gl_node01(p1, i, panels);
             for (p2 = 0; p2 < panels; ++p2)
                 for (j = 0; j < 8; ++j) {
-                    mf_real v = mf__albedo_weight(d, wo, eta, lo, u1, mf__gl_node01(p2, j, panels));
-                    if (v != MF_R(0.0)) sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
+                    mf_real vt, v = mf__albedo_weight(d, wo, eta, lo, u1, mf__gl_node01(p2, j, panels), &vt);
+                    if (v != MF_R(0.0)) {
+                        sum += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)v;
+                        st += (double)mf__gl_w(i) * (double)mf__gl_w(j) * (double)vt;
+                    }
                 }
         }
     sum *= h * h;
+    st *= h * h;
+    if (tr) *tr = (mf_real)(st > 0.0 ? (st < sum ? st : sum) : 0.0);
+    if (tr && sum > 1.0) *tr = (mf_real)(st / sum);
     return sum > 0.0 ? (sum < 1.0 ? (mf_real)sum : MF_R(1.0)) : MF_R(0.0);
 }
 
@@ -189,7 +245,7 @@ MFDEF mf_real mf_albedo_integrate(const mf_ndf *d, mf_vec3 wo, int panels)
     if (!d || !mf__ndf_known(d->type) || panels < 1 || panels > 64) return MF_R(0.0);
     if (!(wo.z > MF_R(0.0)) || !(wo.z <= MF_R(1.0)) || !(wo.x == wo.x) || !(wo.y == wo.y)) return MF_R(0.0);
     d = mf__ndf_prepare(d, &pr);   /* trait PREP: a GTR's Lambda rule built once */
-    return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels);
+    return mf__albedo_quad(d, wo, MF_R(0.0), MF_R(0.0), panels, 0);
 }
 
 /* 2 int_0^1 e(x) mu dmu with mu = x^2 (dmu = 2 x dx) for e piecewise linear
@@ -391,7 +447,7 @@ MFDEF mf_real mf_dielectric_albedo_integrate(const mf_ndf *d, mf_vec3 wo, mf_rea
     if (!(eta > MF_R(0.0)) || !(eta < MF_BIG) || !(wo.x == wo.x) || !(wo.y == wo.y) || !(MF_FABS(wo.z) <= MF_R(1.0))) return MF_R(0.0);
     if (!(wo.z != MF_R(0.0))) return MF_R(0.0);
     if (wo.z < MF_R(0.0)) { wo = mf_scale(wo, MF_R(-1.0)); eta = MF_R(1.0) / eta; }   /* as mf_dielectric_sample */
-    return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels);
+    return mf__albedo_quad(d, wo, eta, mf_lambda(d, wo), panels, 0);
 }
 
 MFDEF void mf_dielectric_ms_table_release(mf_dielectric_ms_table *t)
@@ -457,53 +513,351 @@ MFDEF mf_real mf_dielectric_ms_table_albedo(const mf_dielectric_ms_table *t, mf_
     return E[i] * (MF_R(1.0) - fx) + E[i + 1] * fx;
 }
 
-/* importance-form lobe value (1 - E(wo)) (1 - E(wi)) share / (pi (1 - E_avg of wi's side)) */
-static inline mf_real mf__dielectric_ms_imp(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
+/* The dielectric compensation lobe from its parts, shared by the table and
+ * the built-in path: the averages E1_avg, E2_avg, the shares x, y and eta
+ * (mf_dielectric_ms_table's fields), and a floor c added to every loss
+ * 1 - E (0 for a table; the built-in tables' interpolant may exceed 1 by a
+ * little where E ~ 1, and the lobe (1 - E(wo) + c) (1 - E(wi) + c) /
+ * (pi (1 - E_avg + c)) stays reciprocal, positive and normalized, putting
+ * back c too much). */
+typedef struct mf__diel_ms {
+    mf_real eta, E1_avg, E2_avg, x, y, c;
+} mf__diel_ms;
+
+/* the shares from the averages: x = 1 - F_avg(eta), y by reciprocity
+ * (x clamped to keep y <= 1) */
+static inline void mf__diel_ms_shares(mf__diel_ms *p, mf_real f_avg)
+{
+    mf_real x = MF_R(1.0) - mf_clamp(f_avg, MF_R(0.0), MF_R(1.0)), y = MF_R(0.0);
+    mf_real den = p->eta * p->eta * (MF_R(1.0) - p->E2_avg + p->c);
+    if (den > MF_R(1e-9)) y = x * (MF_R(1.0) - p->E1_avg + p->c) / den;
+    if (y > MF_R(1.0)) { x /= y; y = MF_R(1.0); }
+    p->x = x;
+    p->y = y;
+}
+
+/* 1 when wo and wi are usable directions off the horizon */
+MF_INLINE int mf__diel_ms_dirs_ok(mf_vec3 wo, mf_vec3 wi)
+{
+    return wo.z != MF_R(0.0) && wi.z != MF_R(0.0) && wo.z == wo.z && wi.z == wi.z;
+}
+
+/* the radiance-form lobe (importance form when mode says so) for the albedos
+ * eo of wo and ei of wi on their sides: share (1 - eo) (1 - ei) /
+ * (pi (1 - E_avg of wi's side)), transmission divided by e^2 in radiance */
+static inline mf_real mf__diel_ms_eval(const mf__diel_ms *p, mf_vec3 wo, mf_vec3 wi, mf_real eo, mf_real ei, mf_transport mode)
 {
     int below_o = wo.z < MF_R(0.0), below_i = wi.z < MF_R(0.0);
-    mf_real share = below_o ? (below_i ? MF_R(1.0) - t->y : t->y) : (below_i ? t->x : MF_R(1.0) - t->x);
-    mf_real ea = below_i ? t->E2_avg : t->E1_avg, den = MF_PI * (MF_R(1.0) - ea);
+    mf_real share = below_o ? (below_i ? MF_R(1.0) - p->y : p->y) : (below_i ? p->x : MF_R(1.0) - p->x);
+    mf_real ea = below_i ? p->E2_avg : p->E1_avg, den = MF_PI * (MF_R(1.0) - ea + p->c), f, e;
     if (!(den > MF_R(1e-6))) return MF_R(0.0);
-    return mf_clamp(share * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wo)) * (MF_R(1.0) - mf_dielectric_ms_table_albedo(t, wi)) / den,
-                    MF_R(0.0), MF_BIG);
+    f = mf_clamp(share * (MF_R(1.0) - eo + p->c) * (MF_R(1.0) - ei + p->c) / den, MF_R(0.0), MF_BIG);
+    if (below_o == below_i || mode == MF_IMPORTANCE) return f;
+    e = below_o ? MF_R(1.0) / p->eta : p->eta;   /* eta_i / eta_o */
+    return f / (e * e);
+}
+
+/* density: the side's share times cosine */
+static inline mf_real mf__diel_ms_density(const mf__diel_ms *p, mf_vec3 wo, mf_vec3 wi)
+{
+    mf_real share = wo.z < MF_R(0.0) ? p->y : p->x;
+    if (wo.z * wi.z < MF_R(0.0)) return share * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+    return (MF_R(1.0) - share) * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+}
+
+/* the sampled direction: cosine on the side u3 picks (transmission with the
+ * transmitted share of wo's side); the zero vector when none */
+static inline mf_vec3 mf__diel_ms_pick(const mf__diel_ms *p, mf_vec3 wo, mf_real u1, mf_real u2, mf_real u3)
+{
+    mf_vec3 w = mf__sample_cosine(u1, u2);
+    mf_real share = wo.z < MF_R(0.0) ? p->y : p->x;
+    if (!(w.z > MF_R(0.0))) return mf_vec3_make(MF_R(0.0), MF_R(0.0), MF_R(0.0));
+    if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
+    if (wo.z < MF_R(0.0)) w.z = -w.z;
+    return w;
+}
+
+/* the record for w with value f and density p */
+MF_INLINE mf_sample mf__diel_ms_record(mf_vec3 wo, mf_vec3 w, mf_real f, mf_real p)
+{
+    mf_sample s = mf__no_sample();
+    if (!(p > MF_R(0.0)) || !(w.z != MF_R(0.0))) return s;
+    s.wi = w;
+    s.pdf = p;
+    s.weight = mf_min(f * MF_FABS(w.z) / p, MF_BIG);
+    s.lobe = wo.z * w.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
+    return s;
+}
+
+static inline mf__diel_ms mf__diel_ms_of_table(const mf_dielectric_ms_table *t)
+{
+    mf__diel_ms p;
+    p.eta = t->eta; p.E1_avg = t->E1_avg; p.E2_avg = t->E2_avg; p.x = t->x; p.y = t->y;
+    p.c = MF_R(0.0);
+    return p;
 }
 
 MFDEF mf_real mf_dielectric_ms_table_bsdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi, mf_transport mode)
 {
-    mf_real f, e;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
-    f = mf__dielectric_ms_imp(t, wo, wi);
-    if (wo.z * wi.z > MF_R(0.0) || mode == MF_IMPORTANCE) return f;
-    e = wo.z > MF_R(0.0) ? t->eta : MF_R(1.0) / t->eta;   /* eta_i / eta_o */
-    return f / (e * e);
+    mf__diel_ms p;
+    if (!t || !t->E || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    p = mf__diel_ms_of_table(t);
+    return mf__diel_ms_eval(&p, wo, wi, mf_dielectric_ms_table_albedo(t, wo), mf_dielectric_ms_table_albedo(t, wi), mode);
 }
 
 MFDEF mf_sample mf_dielectric_ms_table_sample(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_transport mode,
                                               mf_real u1, mf_real u2, mf_real u3)
 {
-    mf_sample s = mf__no_sample();
+    mf__diel_ms p;
     mf_vec3 w;
-    mf_real share, p;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return s;
-    w = mf__sample_cosine(u1, u2);
-    if (!(w.z > MF_R(0.0))) return s;
-    share = wo.z < MF_R(0.0) ? t->y : t->x;   /* transmitted share */
-    if (!(mf__u01(u3) >= share)) w.z = -w.z;  /* transmission: the other side */
-    if (wo.z < MF_R(0.0)) w.z = -w.z;
-    p = mf_dielectric_ms_table_pdf(t, wo, w);
-    if (!(p > MF_R(0.0))) return s;
-    s.wi = w;
-    s.pdf = p;
-    s.weight = mf_min(mf_dielectric_ms_table_bsdf(t, wo, w, mode) * MF_FABS(w.z) / p, MF_BIG);
-    s.lobe = wo.z * w.z > MF_R(0.0) ? MF_LOBE_REFLECTION : MF_LOBE_TRANSMISSION;
-    return s;
+    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf__no_sample();
+    p = mf__diel_ms_of_table(t);
+    w = mf__diel_ms_pick(&p, wo, u1, u2, u3);
+    if (!(w.z != MF_R(0.0))) return mf__no_sample();
+    return mf__diel_ms_record(wo, w, mf_dielectric_ms_table_bsdf(t, wo, w, mode), mf_dielectric_ms_table_pdf(t, wo, w));
 }
 
 MFDEF mf_real mf_dielectric_ms_table_pdf(const mf_dielectric_ms_table *t, mf_vec3 wo, mf_vec3 wi)
 {
-    mf_real share;
-    if (!t || !t->E || !(wo.z != MF_R(0.0)) || !(wi.z != MF_R(0.0)) || !(wo.z == wo.z) || !(wi.z == wi.z)) return MF_R(0.0);
-    share = wo.z < MF_R(0.0) ? t->y : t->x;
-    if (wo.z * wi.z < MF_R(0.0)) return share * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
-    return (MF_R(1.0) - share) * mf_min(MF_FABS(wi.z), MF_R(1.0)) / MF_PI;
+    mf__diel_ms p;
+    if (!t || !t->E || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    p = mf__diel_ms_of_table(t);
+    return mf__diel_ms_density(&p, wo, wi);
+}
+
+/* ---- rough dielectrics from the built-in tables */
+/* the lobe's loss floor c for the built-in tables (mf__diel_ms): keeps the
+ * lobe positive where their interpolant exceeds 1 (by up to 2e-3, at small
+ * alpha; a floor that large would bias the furnace by as much) */
+#define MF__DIEL_FLOOR MF_R(5e-4)
+
+#ifndef MF_NO_ENERGY_TABLES
+/* the table coordinate of s = |e - 1| / (e + 1): log(s + SOFF), nodes from
+ * e = 1.05 to 3 (near e = 1 a grazing refraction's angle below the
+ * horizon grows like sqrt(s); far from it E is nearly linear in s) */
+MF_INLINE mf_real mf__diel_scoord(mf_real s)
+{
+    return MF_LOG((mf_max(s, (mf_real)MF__DIEL_SMIN) + (mf_real)MF__DIEL_SOFF) / (mf_real)(MF__DIEL_SMIN + MF__DIEL_SOFF)) *
+           ((mf_real)(MF__DIEL_NS - 1) / (mf_real)MF__DIEL_LOGR);
+}
+
+/* A place in the tables: kind k (0 GGX, 1 Beckmann), alpha, and the cell
+ * and weights of (s, sqrt(alpha)), shared by both sides (e and 1 / e have
+ * the same s). */
+typedef struct mf__diel_at {
+    int k, j, i[4];
+    mf_real alpha, fs, wr[4];
+} mf__diel_at;
+static inline mf__diel_at mf__diel_locate(int k, mf_real alpha, mf_real eta)
+{
+    mf__diel_at p;
+    mf_real s = MF_FABS(eta - MF_R(1.0)) / (eta + MF_R(1.0)), fr, t, t2, t3;
+    int i, b;
+    p.k = k;
+    p.alpha = alpha;
+    p.fs = mf_clamp(mf__diel_scoord(s), MF_R(0.0), (mf_real)(MF__DIEL_NS - 1));
+    fr = mf_clamp(MF_SQRT(mf_max(alpha, MF_R(0.0))), MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NR - 1);
+    p.j = (int)p.fs; if (p.j > MF__DIEL_NS - 2) p.j = MF__DIEL_NS - 2;
+    i = (int)fr; if (i > MF__DIEL_NR - 2) i = MF__DIEL_NR - 2;
+    p.fs -= (mf_real)p.j;
+    t = fr - (mf_real)i;
+    /* Catmull-Rom in sqrt(alpha) (end rows repeated): the weights do not
+     * depend on mu, so the averages stay exact for the interpolant, and the
+     * onset of total internal reflection with alpha is followed better than
+     * linearly */
+    t2 = t * t;
+    t3 = t2 * t;
+    p.wr[0] = MF_R(0.5) * (-t3 + MF_R(2.0) * t2 - t);
+    p.wr[1] = MF_R(0.5) * (MF_R(3.0) * t3 - MF_R(5.0) * t2 + MF_R(2.0));
+    p.wr[2] = MF_R(0.5) * (MF_R(-3.0) * t3 + MF_R(4.0) * t2 + t);
+    p.wr[3] = MF_R(0.5) * (t3 - t2);
+    for (b = 0; b < 4; ++b) p.i[b] = i - 1 + b < 0 ? 0 : (i - 1 + b > MF__DIEL_NR - 1 ? MF__DIEL_NR - 1 : i - 1 + b);
+    return p;
+}
+
+/* E (importance) of the side (0: relative index e >= 1, 1: e < 1) at |mu|
+ * in [0, 1]: the F = 1 albedo plus the trilinear dE, not clamped (the
+ * lobe's averages are this interpolant's); E_avg when mu < 0. */
+static inline mf_real mf__diel_E(const mf__diel_at *p, int side, mf_real mu)
+{
+    const short *dE = mf__energy_diel_data();
+    const float *avg = mf__energy_diel_avg();
+    int c, a, b;
+    mf_real v = MF_R(0.0), w, fx;
+    size_t base;
+    if (mu < MF_R(0.0)) {
+        for (a = 0; a < 2; ++a)
+            for (b = 0; b < 4; ++b) {
+                w = (a ? p->fs : MF_R(1.0) - p->fs) * p->wr[b];
+                v += w * (mf_real)avg[((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + p->i[b]];
+            }
+        return mf__energy_lookup(p->k, p->alpha, MF_R(-1.0)) + v;
+    }
+    /* columns u = (mu^(1/4) + 1 - sqrt(1 - mu)) / 2: dense at grazing, linear
+     * in the angle at normal incidence */
+    fx = mf_clamp(MF_R(0.5) * (MF_SQRT(MF_SQRT(mf_min(mu, MF_R(1.0)))) + MF_R(1.0) - MF_SQRT(mf_max(MF_R(1.0) - mu, MF_R(0.0)))),
+                  MF_R(0.0), MF_R(1.0)) * (mf_real)(MF__DIEL_NX - 1);
+    c = (int)fx; if (c > MF__DIEL_NX - 2) c = MF__DIEL_NX - 2;
+    fx -= (mf_real)c;
+    for (a = 0; a < 2; ++a)
+        for (b = 0; b < 4; ++b) {
+            w = (a ? p->fs : MF_R(1.0) - p->fs) * p->wr[b];
+            base = ((size_t)((p->k * 2 + side) * MF__DIEL_NS + p->j + a) * MF__DIEL_NR + (size_t)p->i[b]) * MF__DIEL_NX + (size_t)c;
+            v += w * ((MF_R(1.0) - fx) * (mf_real)dE[base] + fx * (mf_real)dE[base + 1]);
+        }
+    return mf__energy_lookup(p->k, p->alpha, mu) + v * MF_R(1e-4);
+}
+
+/* F_avg of the material's eta (side 0: eta >= 1), linear in the s cell */
+static inline mf_real mf__diel_favg(const mf__diel_at *p, int side)
+{
+    const float *fa = mf__energy_diel_avg() + 2 * 2 * MF__DIEL_NS * MF__DIEL_NR + side * MF__DIEL_NS;
+    return (mf_real)fa[p->j] * (MF_R(1.0) - p->fs) + (mf_real)fa[p->j + 1] * p->fs;
+}
+#endif
+
+/* the built-in table of d for the dielectric path, -1 when none */
+MF_INLINE int mf__diel_kind(const mf_ndf *d)
+{
+#ifdef MF_NO_ENERGY_TABLES
+    (void)d;
+    return -1;
+#else
+    return mf__energy_kind(d);
+#endif
+}
+
+/* The built-in path's state for d and the material's eta: the table place
+ * (k >= 0) or d prepared for quadrature (k < 0). */
+typedef struct mf__diel_src {
+    const mf_ndf *d;
+    mf_real eta;
+    int k;
+    mf__ndf_prep pr;
+#ifndef MF_NO_ENERGY_TABLES
+    mf__diel_at at;
+#endif
+} mf__diel_src;
+static inline void mf__diel_src_init(mf__diel_src *q, const mf_ndf *d, mf_real eta)
+{
+    q->eta = eta;
+    q->k = mf__diel_kind(d);
+#ifndef MF_NO_ENERGY_TABLES
+    if (q->k >= 0) { q->d = d; q->at = mf__diel_locate(q->k, MF_SQRT(d->ax * d->ay), eta); return; }
+#endif
+    q->d = mf__ndf_prepare(d, &q->pr);
+}
+
+/* E of w's side (importance): table (unclamped) or quadrature (one panel) */
+static inline mf_real mf__diel_albedo(const mf__diel_src *q, mf_vec3 w)
+{
+    mf_real mu = mf__energy_mu(w), e = w.z < MF_R(0.0) ? MF_R(1.0) / q->eta : q->eta;
+    if (!(mu > MF_R(0.0))) return MF_R(0.0);
+#ifndef MF_NO_ENERGY_TABLES
+    if (q->k >= 0) return mf__diel_E(&q->at, e < MF_R(1.0), mu);
+#endif
+    w = mf_scale(w, (w.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(w.z));   /* unit, above */
+    return mf__albedo_quad(q->d, w, e, mf_lambda(q->d, w), 1, 0);
+}
+
+/* the hemispherical average of E of the side seen from below (below = 1)
+ * or above */
+static inline mf_real mf__diel_average(const mf__diel_src *q, int below)
+{
+    int i, j, n_phi;
+    double row[17], sum = 0.0;
+    const mf_ndf *d = q->d;
+#ifndef MF_NO_ENERGY_TABLES
+    if (q->k >= 0) return mf__diel_E(&q->at, (below ? MF_R(1.0) / q->eta : q->eta) < MF_R(1.0), MF_R(-1.0));
+#endif
+    n_phi = (!d->transformed && d->ax == d->ay && mf__ndf_axes(d->type)) ? 1 : 8;
+    for (j = 0; j < n_phi; ++j) {
+        mf_real phi = MF_R(2.0) * MF_PI * (mf_real)j / (mf_real)n_phi;
+        for (i = 0; i < 17; ++i) {
+            mf_vec3 w = mf__energy_node_dir(i, 17, phi);
+            if (below) w.z = -w.z;
+            row[i] = (double)mf__diel_albedo(q, w);
+        }
+        sum += mf__energy_avg_1d(row, 17);
+    }
+    return (mf_real)(sum / (double)n_phi);
+}
+
+/* the lobe's parts */
+static inline mf__diel_ms mf__diel_ms_of(const mf__diel_src *q)
+{
+    mf__diel_ms p;
+    mf_real f_avg;
+    p.eta = q->eta;
+    p.c = q->k >= 0 ? MF__DIEL_FLOOR : MF_R(0.0);
+    p.E1_avg = mf__diel_average(q, 0);
+    p.E2_avg = mf__diel_average(q, 1);
+#ifndef MF_NO_ENERGY_TABLES
+    f_avg = q->k >= 0 ? mf__diel_favg(&q->at, q->eta < MF_R(1.0)) : mf_fresnel_dielectric_average(q->eta);
+#else
+    f_avg = mf_fresnel_dielectric_average(q->eta);
+#endif
+    mf__diel_ms_shares(&p, f_avg);
+    return p;
+}
+
+MF_INLINE int mf__diel_input_ok(const mf_ndf *d, mf_real eta)
+{
+    return d && mf__ndf_known(d->type) && eta > MF_R(1e-3) && eta < MF_R(1e3);
+}
+
+MFDEF mf_real mf_dielectric_albedo(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode)
+{
+    mf__diel_src q;
+    mf_real E, T, e, mu;
+    mf__ndf_prep pr;
+    mf_vec3 w;
+    if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return MF_R(0.0);
+    mf__diel_src_init(&q, d, eta);
+    E = mf_clamp(mf__diel_albedo(&q, wo), MF_R(0.0), MF_R(1.0));
+    if (mode == MF_IMPORTANCE) return E;
+    /* radiance: the transmitted part T (by quadrature, 4 panels) carries 1 / e^2 */
+    mu = mf__energy_mu(wo);
+    if (!(mu > MF_R(0.0))) return MF_R(0.0);
+    e = wo.z < MF_R(0.0) ? MF_R(1.0) / eta : eta;   /* eta_i / eta_o of the transmitted part */
+    w = mf_scale(wo, (wo.z < MF_R(0.0) ? MF_R(-1.0) : MF_R(1.0)) * mu / MF_FABS(wo.z));
+    d = mf__ndf_prepare(d, &pr);
+    (void)mf__albedo_quad(d, w, e, mf_lambda(d, w), 4, &T);
+    T = mf_min(T, E);
+    return E - T + T / (e * e);
+}
+
+MFDEF mf_real mf_dielectric_bsdf_ms(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta, mf_transport mode)
+{
+    mf__diel_src q;
+    mf__diel_ms p;
+    if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    mf__diel_src_init(&q, d, eta);
+    p = mf__diel_ms_of(&q);
+    return mf__diel_ms_eval(&p, wo, wi, mf__diel_albedo(&q, wo), mf__diel_albedo(&q, wi), mode);
+}
+
+MFDEF mf_real mf_dielectric_bsdf_ms_pdf(const mf_ndf *d, mf_vec3 wo, mf_vec3 wi, mf_real eta)
+{
+    mf__diel_src q;
+    mf__diel_ms p;
+    if (!mf__diel_input_ok(d, eta) || !mf__diel_ms_dirs_ok(wo, wi)) return MF_R(0.0);
+    mf__diel_src_init(&q, d, eta);
+    p = mf__diel_ms_of(&q);
+    return mf__diel_ms_density(&p, wo, wi);
+}
+
+MFDEF mf_sample mf_dielectric_bsdf_ms_sample(const mf_ndf *d, mf_vec3 wo, mf_real eta, mf_transport mode,
+                                             mf_real u1, mf_real u2, mf_real u3)
+{
+    mf__diel_src q;
+    mf__diel_ms p;
+    mf_vec3 w;
+    if (!mf__diel_input_ok(d, eta) || !(wo.z != MF_R(0.0)) || !(wo.z == wo.z)) return mf__no_sample();
+    mf__diel_src_init(&q, d, eta);
+    p = mf__diel_ms_of(&q);
+    w = mf__diel_ms_pick(&p, wo, u1, u2, u3);
+    if (!(w.z != MF_R(0.0))) return mf__no_sample();
+    return mf__diel_ms_record(wo, w, mf__diel_ms_eval(&p, wo, w, mf__diel_albedo(&q, wo), mf__diel_albedo(&q, w), mode),
+                              mf__diel_ms_density(&p, wo, w));
 }

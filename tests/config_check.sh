@@ -23,7 +23,7 @@ fail() { echo "config check: $*"; exit 1; }
 # (the whole header, no opt-out, is compiled with -Werror by tests/warnings.sh)
 ALL_OUT="-DMF_NO_LEADR -DMF_NO_LTC_TABLE -DMF_NO_IBM -DMF_NO_MICROSURFACE"
 for case in "-DMF_NO_LEADR|" "-DMF_NO_LTC_TABLE|-DMF_USE_DOUBLE" "-DMF_NO_IBM|" \
-            "-DMF_NO_MICROSURFACE|-DMF_USE_DOUBLE" "$ALL_OUT|" "$ALL_OUT|-DMF_USE_DOUBLE"; do
+            "-DMF_NO_MICROSURFACE|-DMF_USE_DOUBLE" "-DMF_NO_ENERGY_TABLES|" "$ALL_OUT|" "$ALL_OUT|-DMF_USE_DOUBLE"; do
   opt=${case%|*}; prec=${case#*|}
   $CC -std=c99 $WARN -Werror $opt $prec -I. tests/optout_check.c -o $B/optout -lm || fail "opt-out '$opt $prec' (C)"
   $B/optout || fail "opt-out '$opt $prec' does not work"

@@ -67,6 +67,8 @@ int main(void)
                     mf_dielectric_ms_table_release(&dt);
                 }
                 s += mf_dielectric_albedo_integrate(d, wo, MF_R(1.5), 1);
+                s += mf_dielectric_albedo(d, wo, MF_R(1.5), MF_RADIANCE) + mf_dielectric_bsdf_ms(d, wo, wi, MF_R(1.5), MF_IMPORTANCE) + mf_dielectric_bsdf_ms_pdf(d, wo, wi, MF_R(1.5));
+                s += mf_dielectric_bsdf_ms_sample(d, wo, MF_R(1.5), MF_RADIANCE, MF_R(0.2), MF_R(0.4), MF_R(0.6)).weight;
             }
         s += mf_dielectric_bsdf(d, wo, wi, MF_R(1.5), MF_RADIANCE) + mf_dielectric_pdf(d, wo, wi, MF_R(1.5));
         s += mf_dielectric_sample(d, wo, MF_R(1.5), MF_RADIANCE, MF_R(0.2), MF_R(0.7), MF_R(0.5)).weight + mf_dielectric_bsdf(d, wo, wi, MF_R(1.5), MF_IMPORTANCE);

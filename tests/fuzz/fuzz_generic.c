@@ -124,5 +124,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         r = mf_sheen_sample(wo, x, u1, u2);
         FZ_SAMPLE(r, "sheen_sample");
     }
+    if (d.type == MF_NDF_GGX || d.type == MF_NDF_BECKMANN) {   /* the built-in dielectric tables (other kinds integrate: slow) */
+        mf_real eta = fz_real(&in);
+        FZ_NONNEG(mf_dielectric_albedo(&d, wo, eta, MF_IMPORTANCE), "dielectric_albedo");
+        FZ_NONNEG(mf_dielectric_albedo(&d, wo, eta, MF_RADIANCE), "dielectric_albedo radiance");
+        FZ_NONNEG(mf_dielectric_bsdf_ms(&d, wo, wi, eta, MF_RADIANCE), "dielectric_bsdf_ms");
+        FZ_NONNEG(mf_dielectric_bsdf_ms_pdf(&d, wo, wi, eta), "dielectric_bsdf_ms_pdf");
+        r = mf_dielectric_bsdf_ms_sample(&d, wo, eta, MF_IMPORTANCE, u1, u2, u1 * u2);
+        FZ_SAMPLE(r, "dielectric_bsdf_ms_sample");
+    }
     return 0;
 }
