@@ -14,7 +14,8 @@
  * orientation, so one-sided lights stay right), and swapping alpha_x and
  * alpha_y is the exchange of x and y (likewise a conjugation), so that the
  * table holds alpha_x >= alpha_y only. Its last slice, alpha_y = alpha_x, is
- * the isotropic table (mf_ltc_ggx) rotated to the view's azimuth. */
+ * the isotropic table (mf_ltc_ggx) rotated to the view's azimuth. Lookups
+ * blend each node's M (not M^-1), as the published table does. */
 
 /* The LTC of anisotropic GGX (ax along x = the tangent, ay along y) for the
  * view wo in the shading frame (not the LTC frame: the azimuth matters), and
@@ -48,11 +49,12 @@ MFDEF const unsigned short *mf_ltc_ggx_aniso_table(int dims[4]);
  * (n_alpha - 1), g = sqrt(alpha_y / alpha_x) n_v; fetch with texelFetch the
  * 16 corners (floor, floor + 1 in each, clamped; for g's upper node at n_v
  * use the isotropic texture's M^-1 = [a 0 b; 0 1 0; c 0 d] at (cos theta_o,
- * alpha_x) rotated to the azimuth, R M^-1 R^T / sqrt(a)) and blend
- * multilinearly; s = (1 + q^2) / p per corner; M^-1 = [p q r; q s t; u v w]
- * in the shading frame (T = tangent of alpha_x, B, N); then undo the mirror
- * (negate the entries (0,1), (1,0), (0,2), (2,0) for x, (0,1), (1,0), (1,2),
- * (2,1) for y) and the swap (exchange rows 0 and 1 and columns 0 and 1).
+ * alpha_x) rotated to the azimuth, R M^-1 R^T); per corner, M^-1 = [p q r;
+ * q s t; u v w] with s = (1 + q^2) / p, its inverse M scaled to a unit last
+ * column; blend those M multilinearly (in the shading frame: T = tangent of
+ * alpha_x, B, N); then undo the mirror (negate the entries (0,1), (1,0),
+ * (0,2), (2,0) for x, (0,1), (1,0), (1,2), (2,1) for y) and the swap
+ * (exchange rows 0 and 1 and columns 0 and 1), and integrate with inverse(M).
  * Returns MF_ERROR_INVALID_ARGUMENT on null pointers. */
 MFDEF mf_result mf_ltc_ggx_aniso_export_rgba16f(unsigned short *tex1, unsigned short *tex2);
 #endif
@@ -87,24 +89,24 @@ static void mf__ltc_aniso_iso_node(mf_real ct, mf_real alpha, mf_real cp, mf_rea
     m[6] = c * cp * k;                 m[7] = c * sp * k;                  m[8] = d * k;
 }
 
-/* The LTC of a row-major M^-1 (singular or not finite: M = I) */
-static mf_ltc mf__ltc_from_minv9(const mf_real *mi)
+/* M of a node's M^-1, scaled to a last column of unit length (the published
+ * table's normalization); 0 if singular */
+static int mf__ltc_aniso_node_m(const mf_real *mi, mf_real *M)
 {
-    mf_ltc l;
-    mf_real det;
-    int i;
-    for (i = 0; i < 9; ++i) l.Minv[i] = mi[i];
-    det = mf__mat3_inverse(l.Minv, l.M);
-    if (!(MF_FABS(det) * MF_BIG > MF_R(1.0)) || !(MF_FABS(det) < MF_BIG)) {
-        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-        return mf_ltc_from_matrix9(I9);
-    }
-    l.det_inv = MF_FABS(det);
-    return l;
+    mf_real n;
+    int k;
+    if (!(mf__mat3_inverse(mi, M) > MF_R(0.0))) return 0;
+    n = MF_SQRT(M[2] * M[2] + M[5] * M[5] + M[8] * M[8]);
+    if (!(n > MF_R(0.0))) return 0;
+    for (k = 0; k < 9; ++k) M[k] /= n;
+    return 1;
 }
 
-/* M^-1 (9 entries) and the albedo for ax >= ay and a view (x, y >= 0):
- * multilinear in (sqrt(1 - cos theta), azimuth, sqrt(ax), sqrt(ay / ax));
+/* M (9 entries) and the albedo for ax >= ay and a view (x, y >= 0):
+ * multilinear in (sqrt(1 - cos theta), azimuth, sqrt(ax), sqrt(ay / ax)) of
+ * each node's M (mf__ltc_aniso_node_m). Blending M moves the lobe's axis M z
+ * linearly between nodes; blending the stored M^-1 instead bends thin lobes
+ * (large anisotropy) between near-normal views (docs/ACCURACY.md).
  * snap: the nearest node instead (the fallback below) */
 static void mf__ltc_aniso_core(mf_real ct, mf_real cp, mf_real sp, mf_real ax, mf_real v, int snap, mf_real *m, mf_real *alb)
 {
@@ -134,19 +136,24 @@ static void mf__ltc_aniso_core(mf_real ct, mf_real cp, mf_real sp, mf_real ax, m
         int dt = c & 1, dp = (c >> 1) & 1, da = (c >> 2) & 1, dv = c >> 3, j = iv + dv;
         mf_real w = (dt ? f[0] : MF_R(1.0) - f[0]) * (dp ? f[1] : MF_R(1.0) - f[1]) * (da ? f[2] : MF_R(1.0) - f[2]);
         const unsigned short *e;
-        mf_real p, q, *o = dv ? m : lo;
+        mf_real p, q, mi[9], nm[9], *o = dv ? m : lo;
         if (j >= nv) continue;
         if (w == MF_R(0.0)) continue;
         e = t + 8 * ((((size_t)(i[2] + da) * (size_t)nv + (size_t)j) * (size_t)nt + (size_t)(i[0] + dt)) * (size_t)np + (size_t)(i[1] + dp));
         p = mf__half_value(e[0]); q = mf__half_value(e[1]);
-        o[0] += w * p; o[1] += w * q; o[2] += w * mf__half_value(e[2]);
-        o[3] += w * q; o[4] += w * (MF_R(1.0) + q * q) / p; o[5] += w * mf__half_value(e[3]);
-        o[6] += w * mf__half_value(e[4]); o[7] += w * mf__half_value(e[5]); o[8] += w * mf__half_value(e[6]);
+        mi[0] = p; mi[1] = q; mi[2] = mf__half_value(e[2]);
+        mi[3] = q; mi[4] = (MF_R(1.0) + q * q) / p; mi[5] = mf__half_value(e[3]);
+        mi[6] = mf__half_value(e[4]); mi[7] = mf__half_value(e[5]); mi[8] = mf__half_value(e[6]);
+        if (!mf__ltc_aniso_node_m(mi, nm)) continue;   /* not in the built-in table (every node has det > 0) */
+        for (k = 0; k < 9; ++k) o[k] += w * nm[k];
         if (dv) hia += w * mf__half_value(e[7]);
         else loa += w * mf__half_value(e[7]);
     }
-    if (iv + 1 >= nv)   /* the isotropic slice at the exact view and alpha */
-        mf__ltc_aniso_iso_node(ct, ax, cp, sp, m, &hia);
+    if (iv + 1 >= nv) {   /* the isotropic slice at the exact view and alpha */
+        mf_real mi[9];
+        mf__ltc_aniso_iso_node(ct, ax, cp, sp, mi, &hia);
+        if (!mf__ltc_aniso_node_m(mi, m)) for (k = 0; k < 9; ++k) m[k] = (k % 4 == 0) ? MF_R(1.0) : MF_R(0.0);
+    }
     for (k = 0; k < 9; ++k) m[k] = (MF_R(1.0) - fv) * lo[k] + fv * m[k];
     if (alb) *alb = (MF_R(1.0) - fv) * loa + fv * hia;
 }
@@ -176,8 +183,8 @@ static mf_ltc mf__ltc_aniso(mf_vec3 wo, mf_real ax, mf_real ay, mf_real *alb)
     }
     a = ax; v = mf_clamp(ay / ax, MF_R(0.0), MF_R(1.0));
     mf__ltc_aniso_core(ct, x, y, a, v, 0, m, alb);
-    {   /* every node preserves orientation (det M^-1 > 0), but a blend of
-         * two differently sheared fits of a very thin lobe can cross 0:
+    {   /* every node preserves orientation (det M > 0), but a blend of
+         * two differently sheared fits of a very thin lobe could cross 0:
          * then the nearest node */
         mf_real d = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
         if (!(d > MF_R(0.0))) mf__ltc_aniso_core(ct, x, y, a, v, 1, m, alb);
@@ -193,7 +200,7 @@ static mf_ltc mf__ltc_aniso(mf_vec3 wo, mf_real ax, mf_real ay, mf_real *alb)
         m[6] = s[7]; m[7] = s[6]; m[8] = s[8];
     }
     if (alb && !(*alb >= MF_R(0.0))) *alb = MF_R(0.0);
-    return mf__ltc_from_minv9(m);
+    return mf_ltc_from_matrix9(m);
 }
 
 MFDEF mf_ltc mf_ltc_ggx_aniso(mf_vec3 wo, mf_real ax, mf_real ay) { return mf__ltc_aniso(wo, ax, ay, 0); }

@@ -10,17 +10,24 @@
  * swap symmetries; lookups at the table's edges and corners (finite,
  * orientation-preserving, continuous across node planes); NaN and Inf give
  * finite output.
- * Tolerances: mean relative error over the reduced set below
- * MFT_ANISO_MEAN_TOL (measured in the comment there), Monte Carlo noise
- * (36864 stratified samples, lights holding at least 2% of the lobe) about
- * 0.5%; quadrature 1e-4 (double) / 1e-3 (float); albedo 0.02 absolute
- * (half-float storage and interpolation); symmetries 1e-9 / 1e-4. */
+ * Tolerances: mean relative error over the reduced set (48 views x 3
+ * lights) below MFT_ANISO_MEAN_TOL (measured values in the comments there;
+ * a broken lookup or table errs by 0.15 and more), Monte Carlo noise (36864
+ * stratified samples, lights holding at least 2% of the lobe) about 0.5%;
+ * quadrature 1e-4 (double) / 1e-3 (float); albedo MFT_ANISO_ALB_TOL absolute
+ * (half-float storage and interpolation); symmetries 1e-9 / 2e-4; ay = 0.99
+ * ax within 2.5% of mf_ltc_ggx (measured 1.9%: the table's L3 fits next to
+ * the isotropic table's refit on polygons, see docs/ACCURACY.md). */
 #include "mf_test.h"
 #include <stdlib.h>
 
 static const double PI_A = 3.14159265358979323846;
-#define MFT_ANISO_MEAN_TOL 0.085      /* reduced set, measured: see test_against_mc */
-#define MFT_ANISO_MEAN_TOL_FULL 0.085 /* whole set */
+#define MFT_ANISO_MEAN_TOL 0.04       /* reduced set: measured 0.0311 */
+#define MFT_ANISO_MEAN_TOL_FULL 0.055 /* whole set (--full): measured 0.0469 */
+#define MFT_ANISO_ALB_TOL 0.035       /* albedo, worst absolute: measured 0.0063 (reduced), 0.0271 (whole) */
+
+/* a check that also prints its measured figure under -v */
+#define MFT_CHECK_V(cond, msg) (mft_verbose ? printf("    %s\n", msg) : 0, MFT_CHECK(cond, msg))
 
 #ifndef MF_NO_LTC_TABLE
 /* ---- independent reference: anisotropic GGX in double ---- */
@@ -178,9 +185,9 @@ static void test_against_mc(void)
     printf("    anisotropic GGX LTC vs Monte Carlo (%s set, %d lights): mean rel error %.4f; by anisotropy 1 2 5 10: %.4f %.4f %.4f %.4f; albedo worst abs %.4f\n",
            mft_full ? "whole" : "reduced", n, sum, sumr[0] / cnt[0], sumr[1] / cnt[1], sumr[2] / cnt[2], sumr[3] / cnt[3], worst_alb);
     snprintf(msg, sizeof msg, "aniso LTC vs MC over squares, disks, tubes: mean rel error %.4f < %.3f", sum, mft_full ? MFT_ANISO_MEAN_TOL_FULL : MFT_ANISO_MEAN_TOL);
-    MFT_CHECK(sum < (mft_full ? MFT_ANISO_MEAN_TOL_FULL : MFT_ANISO_MEAN_TOL), msg);
-    snprintf(msg, sizeof msg, "aniso albedo vs MC: worst abs error %.4f < 0.02", worst_alb);
-    MFT_CHECK(worst_alb < 0.02, msg);
+    MFT_CHECK_V(sum < (mft_full ? MFT_ANISO_MEAN_TOL_FULL : MFT_ANISO_MEAN_TOL), msg);
+    snprintf(msg, sizeof msg, "aniso albedo vs MC: worst abs error %.4f < %.3f", worst_alb, MFT_ANISO_ALB_TOL);
+    MFT_CHECK_V(worst_alb < MFT_ANISO_ALB_TOL, msg);
 }
 
 /* the LTC over the sphere (1) and over a square (the edge integral) by
@@ -229,9 +236,9 @@ static void test_quadrature(void)
         if (mft_verbose) printf("    config %d: sphere %.8f, square %.8g vs edges %.8g\n", c, sph, sq, e[0]);
     }
     snprintf(msg, sizeof msg, "aniso LTC integrates to 1 over the sphere: worst |err| %.2g (config %d)", worst_s, worst_c);
-    MFT_CHECK(worst_s < MFT_TOL(1e-4, 1e-3), msg);
+    MFT_CHECK_V(worst_s < MFT_TOL(1e-4, 1e-3), msg);
     snprintf(msg, sizeof msg, "aniso LTC over a square: edge integral vs quadrature worst rel %.2g", worst_q);
-    MFT_CHECK(worst_q < MFT_TOL(1e-4, 1e-3), msg);
+    MFT_CHECK_V(worst_q < MFT_TOL(1e-4, 1e-3), msg);
 }
 
 /* ax = ay: mf_ltc_ggx in mf_basis_ltc's frame (tangent along the view's
@@ -268,9 +275,9 @@ static void test_isotropic_slice(void)
                 }
             }
     snprintf(msg, sizeof msg, "aniso at ax = ay equals mf_ltc_ggx rotated: worst rel %.2g (albedo %.2g)", worst, worst_alb);
-    MFT_CHECK(worst < MFT_TOL(1e-9, 1e-4) && worst_alb < MFT_TOL(1e-12, 1e-6), msg);
+    MFT_CHECK_V(worst < MFT_TOL(1e-9, 1e-4) && worst_alb < MFT_TOL(1e-12, 1e-6), msg);
     snprintf(msg, sizeof msg, "aniso at ay = 0.99 ax within 2.5%% of mf_ltc_ggx: worst rel %.3g", worst99);
-    MFT_CHECK(worst99 < 0.025, msg);
+    MFT_CHECK_V(worst99 < 0.025, msg);
 }
 
 /* x -> -x, y -> -y and the exchange of x and y (with the alphas) */
@@ -312,7 +319,7 @@ static void test_symmetries(void)
         }
     }
     snprintf(msg, sizeof msg, "aniso LTC mirrored in x, in y, and with x, y and the alphas exchanged: worst rel %.2g", worst);
-    MFT_CHECK(worst < MFT_TOL(1e-9, 2e-4), msg);
+    MFT_CHECK_V(worst < MFT_TOL(1e-9, 2e-4), msg);
 }
 
 /* the table's edges and corners: finite, det > 0, albedo in [0, 1],
@@ -362,9 +369,9 @@ static void test_edges(void)
         }
     if (!(worst_jump < 0.01)) cont = 0;
     snprintf(msg, sizeof msg, "aniso LTC at the table's edges and corners (alphas 0..3, views -0.3..1, azimuths): finite, det > 0, albedo in [0, 1]");
-    MFT_CHECK(ok && t != 0 && dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2 && dims[3] >= 1, msg);
+    MFT_CHECK_V(ok && t != 0 && dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2 && dims[3] >= 1, msg);
     snprintf(msg, sizeof msg, "aniso LTC continuous across node planes: worst jump %.2g < 0.01", worst_jump);
-    MFT_CHECK(cont, msg);
+    MFT_CHECK_V(cont, msg);
 }
 
 static void test_bad(void)

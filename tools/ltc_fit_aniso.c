@@ -45,6 +45,22 @@ static void minv_from_x(const double *x, double *m)
     m[6] = x[4]; m[7] = x[5]; m[8] = x[6];
 }
 
+/* The LTC of a row-major M^-1 (singular or not finite: M = I) */
+static mf_ltc ltc_from_minv9(const double *mi)
+{
+    mf_ltc l;
+    mf_real det;
+    int i;
+    for (i = 0; i < 9; ++i) l.Minv[i] = mi[i];
+    det = mf__mat3_inverse(l.Minv, l.M);
+    if (!(MF_FABS(det) * MF_BIG > MF_R(1.0)) || !(MF_FABS(det) < MF_BIG)) {
+        const mf_real I9[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+        return mf_ltc_from_matrix9(I9);
+    }
+    l.det_inv = MF_FABS(det);
+    return l;
+}
+
 static double fit_error(const fit_ctx *c, const double *x)
 {
     double m[9], err = 0;
@@ -58,7 +74,7 @@ static double fit_error(const fit_ctx *c, const double *x)
      * w < 0 (about as well), but blending those with the w > 0 fits of the
      * neighbouring views crosses det 0. */
     if (!(mf__mat3_inverse(m, inv) > 0) || !(m[8] > 0)) return 1e30;
-    l = mf__ltc_from_minv9(m);
+    l = ltc_from_minv9(m);
     for (i = 0; i < NS; ++i)
         for (j = 0; j < NS; ++j) {
             mf_vec3 w = mf_ltc_sample(&l, (i + 0.5) / NS, (j + 0.5) / NS);
