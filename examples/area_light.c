@@ -9,7 +9,12 @@
  *   5., 6. the quad and the disk over a brushed-metal plane: anisotropic GGX,
  *      alpha 0.4 along the world x axis (the tangent) and 0.05 across it
  *      (mf_ltc_ggx_aniso, mf_ltc_ggx_aniso_albedo: the view in the tangent
- *      frame, its azimuth matters); the spheres stay isotropic.
+ *      frame, its azimuth matters); the spheres stay isotropic. There LTC
+ *      is brighter than MC away from the highlight (past +50%, the colour
+ *      map's end, on the plane's far side and foreground): the transformed
+ *      cosine cannot follow the tail of a thin GGX lobe, as for lights
+ *      beside the lobe in docs/ACCURACY.md (where the published 8^4 table
+ *      errs more).
  * Columns:
  *   1. LTC: specular = mf_ltc_ggx_albedo * the shape's LTC integral (the
  *      built-in GGX table), diffuse = albedo * the same with the identity LTC
@@ -61,7 +66,7 @@
 #define NROW 6
 #define W (3 * PW)
 #define H (NROW * PH)
-#define CAP 50                   /* the caption strip under the rows */
+#define CAP 62                   /* the caption strip under the rows */
 #define NLX 16                   /* light samples: NLX x NLY strata */
 #define NLY 16
 #define NL (NLX * NLY)
@@ -468,6 +473,7 @@ int main(int argc, char **argv)
              (double)THRESH);
     ex_text(&im, 8, H + 20, 1, "Blue away from the highlights: the LTC lobe lacks GGX's long tail; blue rims: the light near a");
     ex_text(&im, 8, H + 32, 1, "sphere's horizon. Curves on the spheres: where the error changes sign (it varies smoothly there).");
+    ex_text(&im, 8, H + 44, 1, "Brushed rows (mf_ltc_ggx_aniso): orange away from the highlight: the LTC overshoots a thin lobe's tail.");
     ex_colorbar_map(&im, 2 * PW + 8, H + 18, PW - 16, 8, -REL_MAX, REL_MAX, ex_diverging_rgb,
                     "relative error (LTC - MC) / MC");
     err = ex_write(&im, base);

@@ -2,7 +2,7 @@
  * BRDF over a set of square, disk and tube lights (docs/ACCURACY.md), and
  * optionally a published 8^4 table read at run time (never stored here).
  *   cc -O2 -DMF_USE_DOUBLE -I. tools/ltc_aniso_eval.c -o ltc_aniso_eval -lm
- *   ./ltc_aniso_eval [--quick] [--xy FILE] [--al FILE]
+ *   ./ltc_aniso_eval [--quick] [--low] [--off AZ EL] [--xy FILE] [--al FILE]
  * FILE: the C array of Aakash KT et al. 2022 (LTC-Anisotropic, LUT/
  * alphax_alphay_theta_phi.cpp for --xy, LUT/alpha_lambda_theta_phi.cpp for
  * --al): 8^4 matrices M (9 floats, row-major), [alpha_x][alpha_y][theta][phi]
@@ -20,7 +20,11 @@
  * each weight counted when its ray hits the light; the same samples give
  * the albedo. Figures: mean relative error of albedo x LTC integral, with
  * the Monte Carlo albedo (the shape of the lobe alone: "shape") and with
- * the table's albedo ("ours"). */
+ * the table's albedo ("ours"), over the lights holding at least 1e-4 of
+ * the albedo. --quick: 128 x 128 samples; --low: views 2, 4, 6, 8, 10 deg
+ * instead; --off AZ EL: the lights' direction turned by AZ radians in
+ * azimuth and lowered by EL radians (at least 0.05 rad above the horizon):
+ * lights beside the lobe. */
 #define MICROFACET_IMPLEMENTATION
 #include "microfacet.h"
 #include <stdio.h>
@@ -165,13 +169,17 @@ static mf_ltc table_ltc(mf_vec3 wo, double ax, double ay, double *alb)
 
 int main(int argc, char **argv)
 {
-    static const double axs[3] = { 0.2, 0.4, 0.7 }, rs[4] = { 1, 2, 5, 10 }, ths[5] = { 0, 20, 40, 60, 80 };
+    static const double axs[3] = { 0.2, 0.4, 0.7 }, rs[4] = { 1, 2, 5, 10 }, ths_main[5] = { 0, 20, 40, 60, 80 }, ths_low[5] = { 2, 4, 6, 8, 10 };
+    const double *ths = ths_main;
+    double off_az = 0, off_el = 0;
     float *pub[2] = { 0, 0 };
     int quick = 0, i, N = 512, ia, ir, ip, it, s, n = 0;
     double sum_shape[3] = { 0 }, sum_ours[3] = { 0 }, sum_pub[2][3] = { { 0 } }, sum_r[4][3] = { { 0 } }, sum_rp[4][3] = { { 0 } };
     int cnt[3] = { 0 }, cnt_r[4] = { 0 };
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--quick")) quick = 1;
+        else if (!strcmp(argv[i], "--low")) ths = ths_low;
+        else if (!strcmp(argv[i], "--off") && i + 2 < argc) { off_az = atof(argv[i + 1]); off_el = atof(argv[i + 2]); i += 2; }
         else if (!strcmp(argv[i], "--xy") && i + 1 < argc) pub[0] = pub_load(argv[++i]);
         else if (!strcmp(argv[i], "--al") && i + 1 < argc) pub[1] = pub_load(argv[++i]);
     }
@@ -189,6 +197,11 @@ int main(int argc, char **argv)
                     mf_ltc l;
                     int a, b;
                     R = mf_vec3_make(-wo.x, -wo.y, wo.z);
+                    if (off_az != 0 || off_el != 0) {   /* beside the lobe */
+                        double az = atan2(R.y, R.x) + off_az, el = asin(R.z) - off_el;
+                        if (el < 0.05) el = 0.05;
+                        R = mf_vec3_make(cos(el) * cos(az), cos(el) * sin(az), sin(el));
+                    }
                     q.c = mf_scale(R, 2.0); q.n = mf_scale(R, -1.0);
                     hz = fabs(R.z) > 0.999 ? mf_vec3_make(cos(ph + PI_D / 2), sin(ph + PI_D / 2), 0) : mf_normalize(mf_cross(mf_vec3_make(0, 0, 1), R));
                     q.e1 = hz; q.e2 = mf_cross(q.n, hz); q.h = 0.4;
