@@ -10437,9 +10437,8 @@ static mf_real mf__half_value(unsigned short h)
  * R M^-1 R^T, scaled to a block determinant of 1 (divided by sqrt(a)). */
 static void mf__ltc_aniso_iso_node(mf_real ct, mf_real alpha, mf_real cp, mf_real sp, mf_real *m, mf_real *alb)
 {
-    mf_ltc l = mf_ltc_ggx(ct, alpha);
+    mf_ltc l = mf__ltc_builtin(mf__ltc_ggx_data, ct, alpha, alb, 0);
     mf_real a = l.Minv[0], b = l.Minv[2], c = l.Minv[6], d = l.Minv[8], k, y = l.Minv[4];
-    if (alb) *alb = mf_ltc_ggx_albedo(ct, alpha);
     if (y > MF_R(0.0)) { a /= y; b /= y; c /= y; d /= y; }   /* the table form has y = 1 */
     k = a > MF_R(0.0) ? MF_R(1.0) / MF_SQRT(a) : MF_R(1.0);
     /* R diag-block [a 0; 0 1] R^T, R = [cp -sp; sp cp] */
@@ -10450,14 +10449,19 @@ static void mf__ltc_aniso_iso_node(mf_real ct, mf_real alpha, mf_real cp, mf_rea
 
 /* M of a node's M^-1, scaled to a last column of unit length (the published
  * table's normalization); 0 if singular */
-static int mf__ltc_aniso_node_m(const mf_real *mi, mf_real *M)
+static int mf__ltc_aniso_node_m(const mf_real *a, mf_real *M)
 {
-    mf_real n;
+    /* the adjugate: M up to the positive factor 1 / det, which the scaling drops */
+    mf_real n, det;
     int k;
-    if (!(mf__mat3_inverse(mi, M) > MF_R(0.0))) return 0;
+    M[0] = a[4] * a[8] - a[5] * a[7]; M[1] = a[2] * a[7] - a[1] * a[8]; M[2] = a[1] * a[5] - a[2] * a[4];
+    M[3] = a[5] * a[6] - a[3] * a[8]; M[4] = a[0] * a[8] - a[2] * a[6]; M[5] = a[2] * a[3] - a[0] * a[5];
+    M[6] = a[3] * a[7] - a[4] * a[6]; M[7] = a[1] * a[6] - a[0] * a[7]; M[8] = a[0] * a[4] - a[1] * a[3];
+    det = a[0] * M[0] + a[1] * M[3] + a[2] * M[6];
     n = MF_SQRT(M[2] * M[2] + M[5] * M[5] + M[8] * M[8]);
-    if (!(n > MF_R(0.0))) return 0;
-    for (k = 0; k < 9; ++k) M[k] /= n;
+    if (!(det > MF_R(0.0)) || !(n > MF_R(0.0)) || !(n < MF_BIG)) return 0;
+    n = MF_R(1.0) / n;
+    for (k = 0; k < 9; ++k) M[k] *= n;
     return 1;
 }
 
