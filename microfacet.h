@@ -4032,25 +4032,6 @@ MFDEF mf_ltc mf_ltc_beckmann(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_beckmann_albedo(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_beckmann_fresnel(mf_real cos_theta_o, mf_real alpha);
 MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha);
-#endif
-/* ======================================================================== */
-/* == 13a. LTC of anisotropic GGX                                           */
-/* ======================================================================== */
-/* Aakash KT, Heitz, Dupuy, Narayanan 2022 (I3D, "Bringing Linearly
- * Transformed Cosines to Anisotropic GGX"): without a plane of symmetry the
- * LTC's matrix has all nine entries. Stored here as M^-1 up to the two
- * invariances of an LTC (a scale, and a rotation about z applied on the
- * left of M^-1): M^-1 = [p q r; q s t; u v w] with the upper-left 2x2 block
- * symmetric positive definite (the polar factor; unique and smooth) and of
- * determinant 1, so s = (1 + q^2) / p: seven numbers per entry, plus the
- * albedo. Symmetries of GGX cut the domain: x -> -x and y -> -y mirror the
- * view into azimuth [0, pi/2] (conjugating M^-1 by the mirror keeps its
- * orientation, so one-sided lights stay right), and swapping alpha_x and
- * alpha_y is the exchange of x and y (likewise a conjugation), so that the
- * table holds alpha_x >= alpha_y only. Its last slice, alpha_y = alpha_x, is
- * the isotropic table (mf_ltc_ggx) rotated to the view's azimuth. Lookups
- * blend each node's M (not M^-1), as the published table does. */
-
 /* The LTC of anisotropic GGX (ax along x = the tangent, ay along y) for the
  * view wo in the shading frame (not the LTC frame: the azimuth matters), and
  * its albedo (the integral of f cos): f cos ~= mf_ltc_ggx_aniso_albedo
@@ -4058,10 +4039,10 @@ MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha);
  * isotropic mf_ltc_ggx. Equals mf_ltc_ggx in mf_basis_ltc's frame when
  * ax = ay (the last slice of the table is that table, rotated). Alphas are
  * clamped to [MF_LTC_ALPHA_MIN, 1], views below the horizon to the horizon;
- * NaN gives the clamped cosine (M = I) and albedo 0. Table: 14_ltc_table_aniso.h
- * (resolution, fit and accuracy there and in docs/ACCURACY.md). Not
- * available in CUDA device code. */
-#ifndef MF_NO_LTC_TABLE
+ * NaN gives the clamped cosine (M = I) and albedo 0. Lookup and its
+ * parameterization: 13_ltc_aniso.h; table: 14_ltc_table_aniso.h
+ * (resolution and fit there, accuracy in docs/ACCURACY.md). Not available
+ * in CUDA device code. */
 MFDEF mf_ltc mf_ltc_ggx_aniso(mf_vec3 wo, mf_real ax, mf_real ay);
 MFDEF mf_real mf_ltc_ggx_aniso_albedo(mf_vec3 wo, mf_real ax, mf_real ay);
 /* The raw table for GPU textures: dims[4] = n_theta, n_phi, n_alpha, n_v;
@@ -4092,6 +4073,27 @@ MFDEF const unsigned short *mf_ltc_ggx_aniso_table(int dims[4]);
  * Returns MF_ERROR_INVALID_ARGUMENT on null pointers. */
 MFDEF mf_result mf_ltc_ggx_aniso_export_rgba16f(unsigned short *tex1, unsigned short *tex2);
 #endif
+/* ======================================================================== */
+/* == 13a. LTC of anisotropic GGX                                           */
+/* ======================================================================== */
+/* Aakash KT, Heitz, Dupuy, Narayanan 2022 (I3D, "Bringing Linearly
+ * Transformed Cosines to Anisotropic GGX"): without a plane of symmetry the
+ * LTC's matrix has all nine entries. Stored here as M^-1 up to the two
+ * invariances of an LTC (a scale, and a rotation about z applied on the
+ * left of M^-1): M^-1 = [p q r; q s t; u v w] with the upper-left 2x2 block
+ * symmetric positive definite (the polar factor; unique and smooth) and of
+ * determinant 1, so s = (1 + q^2) / p: seven numbers per entry, plus the
+ * albedo. Symmetries of GGX cut the domain: x -> -x and y -> -y mirror the
+ * view into azimuth [0, pi/2] (conjugating M^-1 by the mirror keeps its
+ * orientation, so one-sided lights stay right), and swapping alpha_x and
+ * alpha_y is the exchange of x and y (likewise a conjugation), so that the
+ * table holds alpha_x >= alpha_y only. Its last slice, alpha_y = alpha_x, is
+ * the isotropic table (mf_ltc_ggx) rotated to the view's azimuth. Lookups
+ * blend each node's M (not M^-1), as the published table does. */
+
+/* The public functions (mf_ltc_ggx_aniso, mf_ltc_ggx_aniso_albedo,
+ * mf_ltc_ggx_aniso_table, mf_ltc_ggx_aniso_export_rgba16f) are declared in
+ * 13_ltc.h with the other built-in tables. */
 /* ======================================================================== */
 /* == 13b. LTC light shapes: ellipses, disks, lines, tubes, textured quads  */
 /* ======================================================================== */
