@@ -34,7 +34,7 @@ endif
 
 .PHONY: fuzz fuzz-build check-all check-float api kinds prefix history warnings config fastmath package readme include_cost
 .PHONY: all test check test-c test-cpp asan bench bench-inline demo install clean cuda-check cuda-run \
-        header header-check ltc-table ltc-table-ggx ltc-table-beckmann energy-table sheen-table tools \
+        header header-check ltc-table ltc-table-ggx ltc-table-beckmann ltc-table-aniso energy-table sheen-table tools \
         $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip fastmath fuzz \
           c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
@@ -62,10 +62,17 @@ header-check:
 # polygons 259 s CPU, Beckmann 264 s here; ltc-table-ggx and ltc-table-beckmann
 # refit one); they reproduce src/14_ltc_table.h and
 # src/14_ltc_table_beckmann.h byte for byte
-ltc-table: ltc-table-ggx ltc-table-beckmann
+ltc-table: ltc-table-ggx ltc-table-beckmann ltc-table-aniso
 ltc-table-ggx: | $(BUILD)
 	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/ltc_fit.c -o $(BUILD)/ltc_fit -lm
 	./$(BUILD)/ltc_fit --module > src/14_ltc_table.h.tmp && mv src/14_ltc_table.h.tmp src/14_ltc_table.h
+	@$(MAKE) --no-print-directory header
+# the anisotropic GGX table (src/14_ltc_table_aniso.h, about 10 min CPU):
+# its isotropic slice and warm starts come from src/14_ltc_table.h, so
+# refit it after ltc-table-ggx; byte for byte reproducible
+ltc-table-aniso: | $(BUILD)
+	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/ltc_fit_aniso.c -o $(BUILD)/ltc_fit_aniso -lm
+	./$(BUILD)/ltc_fit_aniso --module > src/14_ltc_table_aniso.h.tmp && mv src/14_ltc_table_aniso.h.tmp src/14_ltc_table_aniso.h
 	@$(MAKE) --no-print-directory header
 ltc-table-beckmann: | $(BUILD)
 	$(CC) -std=c99 -O2 -DMF_USE_DOUBLE -I. tools/ltc_fit.c -o $(BUILD)/ltc_fit -lm

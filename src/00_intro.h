@@ -56,8 +56,10 @@
  *   == 13. Linearly Transformed Cosines: eval, sample, polygon integration with
  *          horizon clipping, vector form factor, sphere lights, multi-scale
  *          roughness, fitting and tables
+ *   == 13a. LTC of anisotropic GGX: lookup in the view's azimuth, symmetries
  *   == 13b. LTC light shapes: ellipses, disks, lines, tubes, textured quads
  *   == 14. The built-in GGX and Beckmann LTC tables (generated data)
+ *   == 14a. The built-in anisotropic GGX LTC table (generated data)
  *   == 15. Inverse Bin Map: compact integral histograms of normal maps;
  *          overview, the mf_ibm type and its packed bit format
  *   == 15b. IBM footprints: periods, pieces, exact areas

@@ -741,6 +741,46 @@ MFDEF mf_ltc mf_ltc_beckmann(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_beckmann_albedo(mf_real cos_theta_o, mf_real alpha);
 MFDEF mf_real mf_ltc_beckmann_fresnel(mf_real cos_theta_o, mf_real alpha);
 MFDEF const float *mf_ltc_beckmann_table(int *n_theta, int *n_alpha);
+/* The LTC of anisotropic GGX (ax along x = the tangent, ay along y) for the
+ * view wo in the shading frame (not the LTC frame: the azimuth matters), and
+ * its albedo (the integral of f cos): f cos ~= mf_ltc_ggx_aniso_albedo
+ * mf_ltc_eval; integrate any light with mf_ltc_integrate & co. as for the
+ * isotropic mf_ltc_ggx. Equals mf_ltc_ggx in mf_basis_ltc's frame when
+ * ax = ay (the last slice of the table is that table, rotated). Alphas are
+ * clamped to [MF_LTC_ALPHA_MIN, 1], views below the horizon to the horizon;
+ * NaN gives the clamped cosine (M = I) and albedo 0. Lookup and its
+ * parameterization: 13_ltc_aniso.h; table: 14_ltc_table_aniso.h
+ * (resolution and fit there, accuracy in docs/ACCURACY.md). Not available
+ * in CUDA device code. */
+MFDEF mf_ltc mf_ltc_ggx_aniso(mf_vec3 wo, mf_real ax, mf_real ay);
+MFDEF mf_real mf_ltc_ggx_aniso_albedo(mf_vec3 wo, mf_real ax, mf_real ay);
+/* The raw table for GPU textures: dims[4] = n_theta, n_phi, n_alpha, n_v;
+ * n_alpha * n_v * n_theta * n_phi entries of eight IEEE binary16 values
+ * (p q r t u v w albedo, M^-1 as above with s = (1 + q^2) / p), entry
+ * ((ia n_v + iv) n_theta + it) n_phi + ip at nodes sqrt(1 - cos theta_o) =
+ * it / (n_theta - 1), azimuth = (pi/2) ip / (n_phi - 1), sqrt(alpha_x) =
+ * ia / (n_alpha - 1) (alpha clamped below at MF_LTC_ALPHA_MIN) and
+ * sqrt(alpha_y / alpha_x) = iv / n_v; the slice iv = n_v (isotropic) is
+ * mf_ltc_ggx's table, rotated. mf_ltc_ggx_aniso_export_rgba16f lays it out
+ * as two RGBA half-float textures (shader recipe there). */
+MFDEF const unsigned short *mf_ltc_ggx_aniso_table(int dims[4]);
+/* Two RGBA16F textures of width n_phi n_theta and height n_alpha n_v
+ * (texel (x = it n_phi + ip, y = ia n_v + iv) at [4 (y width + x)]):
+ * tex1 = (p, q, r, t), tex2 = (u, v, w, albedo). Shader lookup (the same
+ * values as mf_ltc_ggx_aniso): mirror the view into x, y >= 0 and swap x
+ * and y when alpha_x < alpha_y (swap the alphas too); t = sqrt(1 - cos
+ * theta_o) (n_theta - 1), f = azimuth / (pi/2) (n_phi - 1), a = sqrt(alpha_x)
+ * (n_alpha - 1), g = sqrt(alpha_y / alpha_x) n_v; fetch with texelFetch the
+ * 16 corners (floor, floor + 1 in each, clamped; for g's upper node at n_v
+ * use the isotropic texture's M^-1 = [a 0 b; 0 1 0; c 0 d] at (cos theta_o,
+ * alpha_x) rotated to the azimuth, R M^-1 R^T); per corner, M^-1 = [p q r;
+ * q s t; u v w] with s = (1 + q^2) / p, its inverse M scaled to a unit last
+ * column; blend those M multilinearly (in the shading frame: T = tangent of
+ * alpha_x, B, N); then undo the mirror (negate the entries (0,1), (1,0),
+ * (0,2), (2,0) for x, (0,1), (1,0), (1,2), (2,1) for y) and the swap
+ * (exchange rows 0 and 1 and columns 0 and 1), and integrate with inverse(M).
+ * Returns MF_ERROR_INVALID_ARGUMENT on null pointers. */
+MFDEF mf_result mf_ltc_ggx_aniso_export_rgba16f(unsigned short *tex1, unsigned short *tex2);
 #endif
 /* @impl */
 /* ---- LTC fitting ---- */

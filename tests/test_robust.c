@@ -182,6 +182,23 @@ void test_robust(void)
         snprintf(msg, sizeof msg, "odd input: built-in dielectric albedo, compensation lobe, pdf, sample (%d bad)", bad);
         MFT_CHECK(bad == 0, msg);
     }
+#ifndef MF_NO_LTC_TABLE
+    {   /* the anisotropic GGX LTC: every view and pair of alphas */
+        int bad_ltc = 0;
+        mf_vec3 q[4];
+        q[0] = mf_vec3_make(-1, -1, 2); q[1] = mf_vec3_make(1, -1, 2); q[2] = mf_vec3_make(1, 1, 2); q[3] = mf_vec3_make(-1, 1, 2);
+        for (i = 0; i < 12; ++i)
+            for (ia = 0; ia < 11; ++ia)
+                for (j = 0; j < 11; ++j) {
+                    mf_ltc lt = mf_ltc_ggx_aniso(dirs[i], (mf_real)alphas[ia], (mf_real)alphas[j]);
+                    double al = mf_ltc_ggx_aniso_albedo(dirs[i], (mf_real)alphas[ia], (mf_real)alphas[j]), v = mf_ltc_integrate(&lt, q, 4, 0);
+                    for (k = 0; k < 9; ++k) if (!mft_finite(lt.M[k]) || !mft_finite(lt.Minv[k])) ++bad_ltc;
+                    if (!(al >= 0 && al <= 1) || !mft_finite(v) || v < 0 || !(lt.det_inv > 0) || !mft_finite(lt.det_inv)) ++bad_ltc;
+                }
+        snprintf(msg, sizeof msg, "odd input: anisotropic GGX LTC finite, albedo in [0, 1] (%d bad)", bad_ltc);
+        MFT_CHECK(bad_ltc == 0, msg);
+    }
+#endif
     /* tiny alpha: still exact enough to reflect like a mirror */
     {
         mf_ndf d = mf_ggx(0, 0);

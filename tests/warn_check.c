@@ -241,6 +241,13 @@ int main(void)
             static unsigned short t1[4 * 64 * 64], t2[4 * 64 * 64];
             if (mf_ltc_table_export_rgba16f(mf_ltc_ggx_table(&nt, &na), nt, na, t1, t2) == MF_SUCCESS) s += (mf_real)t1[0];
         }
+        {   /* anisotropic GGX */
+            static unsigned short a1[4 * 8192], a2[4 * 8192];
+            int dm[4];
+            const unsigned short *at = mf_ltc_ggx_aniso_table(dm);
+            s += mf_ltc_ggx_aniso(wo, MF_R(0.3), MF_R(0.1)).M[0] + mf_ltc_ggx_aniso_albedo(wo, MF_R(0.3), MF_R(0.1)) + (mf_real)at[0];
+            if (dm[0] * dm[1] * dm[2] * dm[3] <= 8192 && mf_ltc_ggx_aniso_export_rgba16f(a1, a2) == MF_SUCCESS) s += (mf_real)a1[0];
+        }
     }
     { mf_basis fr_ = mf_basis_from_normal(wo); t = fr_.t; b = fr_.b; }
     {   /* the lobes of a whole material */

@@ -1,7 +1,7 @@
 /* Fuzz target: LTC with arbitrary matrices and polygons (NaN, Inf, huge,
  * repeated and self-intersecting vertices): mf_ltc_from_matrix,
  * mf_ltc_from_inverse, eval, sample, mf_ltc_integrate, the polygon form
- * factors, the table lookups (the volumetric sheen's too) and the light
+ * factors, the table lookups (anisotropic GGX's and the volumetric sheen's too) and the light
  * shapes (ellipses, disks, lines, tubes, textured quads). */
 #include "fuzz_common.h"
 
@@ -45,6 +45,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FZ_NONNEG(mf_ltc_ggx_fresnel(a, b), "ggx_fresnel");
     l = mf_ltc_ggx(a, b);
     for (i = 0; i < 9; ++i) FZ_FIN(l.Minv[i], "ggx Minv");
+    {   /* the anisotropic GGX table: arbitrary view and alphas */
+        mf_vec3 wa = mf_vec3_make(fz_real(&in), fz_real(&in), fz_real(&in));
+        mf_real c = fz_real(&in);
+        mf_ltc la = mf_ltc_ggx_aniso(wa, a, c);
+        for (i = 0; i < 9; ++i) { FZ_FIN(la.Minv[i], "ggx_aniso Minv"); FZ_FIN(la.M[i], "ggx_aniso M"); }
+        FZ_NONNEG(la.det_inv, "ggx_aniso det");
+        FZ_NONNEG(mf_ltc_ggx_aniso_albedo(wa, b, c), "ggx_aniso_albedo");
+        if (n >= 3) FZ_NONNEG(mf_ltc_integrate(&la, verts, n, two), "ggx_aniso integrate");
+    }
     FZ_NONNEG(mf_ltc_meso_alpha(a), "meso_alpha");
     FZ_NONNEG(mf_ltc_combined_alpha(a, b), "combined_alpha");
     /* the volumetric sheen table: arbitrary view and roughness */
