@@ -36,7 +36,7 @@ endif
 .PHONY: all test check test-c test-cpp asan bench bench-inline demo install clean cuda-check cuda-run \
         header header-check ltc-table ltc-table-ggx ltc-table-beckmann ltc-table-aniso energy-table sheen-table tools \
         $(foreach s,header api kinds prefix history warnings config include_cost package readme examples exr_float exr_double exr_skip fastmath fuzz \
-          c_double c_float cpp_double cpp_float asan_double asan_float,step-$(s))
+          c_double c_double_b c_float cpp_double cpp_float asan_double asan_float,step-$(s))
 
 all: test
 
@@ -177,7 +177,7 @@ $(BUILD)/quick_$(1): $(BUILD)/$(1)/main_quick.o $(patsubst tests/%.c,$(BUILD)/$(
 	@echo "  LINK    $$@"
 	$(Q)$(LINK_$(1)) $$^ -o $$@ -lm
 step-$(1): $(BUILD)/$(RUN_$(1))_$(1) | $(RES)
-	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(if $$(filter test,$$(RUN_$(1))),$$(FULL),--quick)
+	@$$(RUN_STEP) $(1) $(RES)/$(1) tests ./$$< $$(if $$(filter test,$$(RUN_$(1))),$$(FULL) $$(MODS_$(1)),--quick)
 endef
 # make test: the C double build runs every module, the C float and C++ float
 # builds the quick ones (make check-float: every module in float, run by
@@ -186,7 +186,13 @@ RUN_c_double := test
 RUN_c_float := quick
 RUN_cpp_double := quick
 RUN_cpp_float := quick
+# the double build's modules run as two steps, one per core: c_double the
+# first ones, c_double_b the rest
+MODS_c_double := test_core test_ndf test_sampling test_brdf test_ltmd test_ltc test_ltc_shapes
+MODS_c_double_b := $(filter-out $(MODS_c_double),$(TEST_MODULES))
 $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
+step-c_double_b: $(BUILD)/test_c_double | $(RES)
+	@$(RUN_STEP) c_double_b $(RES)/c_double_b tests ./$< $(FULL) $(MODS_c_double_b)
 
 # ---- make test: every step streams its output with [step] in front of each
 # ---- line; steps run in parallel (include_cost first, alone: it times the
@@ -196,7 +202,7 @@ $(foreach c,$(TEST_CFGS),$(eval $(call TEST_CFG,$(c))))
 # ---- campaigns: every module at full size (--full) in all four builds, the
 # ---- fuzz smoke run and the sanitizers.
 CHECK_STEPS := header api kinds prefix history warnings config fastmath package readme
-TEST_STEPS := include_cost c_double $(CHECK_STEPS) c_float examples $(EXR_STEPS) cpp_float
+TEST_STEPS := include_cost c_double c_double_b $(CHECK_STEPS) c_float examples $(EXR_STEPS) cpp_float
 
 $(RES):
 	@mkdir -p $(RES)
@@ -284,8 +290,8 @@ check-float:
 	@$(MAKE) --no-print-directory RUN_c_float=test step-c_float
 	@$(SUM) c_float
 test-c:
-	@$(MAKE) --no-print-directory RUN_c_float=test step-c_double step-c_float
-	@$(SUM) c_double c_float
+	@$(MAKE) --no-print-directory RUN_c_float=test step-c_double step-c_double_b step-c_float
+	@$(SUM) c_double c_double_b c_float
 test-cpp:
 	@$(MAKE) --no-print-directory RUN_cpp_double=test RUN_cpp_float=test step-cpp_double step-cpp_float
 	@$(SUM) cpp_double cpp_float
