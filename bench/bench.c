@@ -1021,6 +1021,28 @@ static void bench_ltc(void)
         t1 = now_ns();
         printf("bench ltc_fit_one_entry %.0f full_64x64_table_s=%.1f\n", (t1 - t0) / 16, (t1 - t0) / 16 * 4096 * 1e-9);
         g_sink += s + (double)fr.albedo;
+        {   /* the anisotropic lookup (view in the shading frame, alpha_y = alpha_x / 3)
+             * against the isotropic one at the same views and alpha_x, best of 20 */
+            double ba = 1e30, bi = 1e30, sa = 0.0;
+            for (it = 0; it < 20; ++it) {
+                double u0, u1, u2;
+                u0 = now_ns();
+                for (i = 0; i < reps; ++i) {
+                    mf_ltc m = mf_ltc_ggx_aniso(g_wo[i & (N - 1)], MF_R(0.05) + g_u2[i & (N - 1)], (MF_R(0.05) + g_u2[i & (N - 1)]) / 3);
+                    sa += (double)(m.Minv[0] + m.Minv[8]);
+                }
+                u1 = now_ns();
+                for (i = 0; i < reps; ++i) {
+                    mf_ltc m = mf_ltc_ggx(g_wo[i & (N - 1)].z, MF_R(0.05) + g_u2[i & (N - 1)]);
+                    sa += (double)(m.Minv[0] + m.Minv[8]);
+                }
+                u2 = now_ns();
+                if ((u1 - u0) / reps < ba) ba = (u1 - u0) / reps;
+                if ((u2 - u1) / reps < bi) bi = (u2 - u1) / reps;
+            }
+            printf("bench ltc_ggx_aniso_lookup %.2f ratio_to_isotropic=%.3f isotropic=%.2f\n", ba, ba / bi, bi);
+            g_sink += sa;
+        }
     }
     bench_ltc_shapes();
     bench_ltc_ngons();
